@@ -1,0 +1,67 @@
+#pragma once
+// Device memory and kernel launches without OpenCL types (only host/cl sees <CL/opencl.hpp>).
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+
+#include "cl/device.hpp"
+
+namespace penumbra::compute {
+
+class DeviceBuffer {
+ public:
+  DeviceBuffer();
+  ~DeviceBuffer();
+  DeviceBuffer(DeviceBuffer&&) noexcept;
+  DeviceBuffer& operator=(DeviceBuffer&&) noexcept;
+
+  // Read-only device copy of host data (at least one byte is allocated for empty spans, since
+  // OpenCL has no zero-sized buffers).
+  static DeviceBuffer upload(Device& device, const void* data, std::size_t bytes);
+  template <class T>
+  static DeviceBuffer upload(Device& device, std::span<const T> data) {
+    return upload(device, data.data(), data.size_bytes());
+  }
+  static DeviceBuffer allocate(Device& device, std::size_t bytes);  // read-write
+  void download(void* destination, std::size_t bytes) const;
+  std::size_t bytes() const;
+
+  struct Impl;
+  Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+// A program built from one of the embedded kernel sources (kernels/<name>.cl).
+class Program {
+ public:
+  // Throws std::runtime_error with the build log when compilation fails.
+  Program(Device& device, const std::string& sourceName, const std::string& options);
+  ~Program();
+  Program(Program&&) noexcept;
+
+  struct Impl;
+  Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+class KernelLaunch {
+ public:
+  KernelLaunch(const Program& program, const std::string& kernelName);
+  ~KernelLaunch();
+  KernelLaunch& arg(unsigned index, const DeviceBuffer& buffer);
+  KernelLaunch& arg(unsigned index, int value);
+  KernelLaunch& arg(unsigned index, float value);
+  // Enqueues over `globalSize` work-items and waits for completion.
+  void run(std::size_t globalSize);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace penumbra::compute

@@ -1,0 +1,28 @@
+#pragma once
+// The one tolerance policy of penumbra. Every geometric comparison on the host uses
+// Tolerance::length (an absolute length derived from the scene's size); the kernel uses
+// kKernelRelative on normalised quantities (sines of angles, fractions of a distance).
+// Never scatter literals: take them from here.
+#include <algorithm>
+
+namespace penumbra {
+
+struct Tolerance {
+  // Host geometry is double: 1e-9 of the scene size is far above round-off (1e-16 relative)
+  // and far below anything a lighting designer models (a 10 m room: 10 nm).
+  static constexpr double kRelativeGeometry = 1e-9;
+  // Kernels are float (2^-24 = 6e-8 relative); directions built from differences and cross
+  // products lose about two digits, so "on the boundary" means within 1e-5 of a unit quantity.
+  static constexpr float kKernelRelative = 1e-5f;
+  // Input validation (planarity, convexity, "on its wall") is about what a person typed: 1e-6 of
+  // the scene size (a 10 m room: 10 µm).
+  static constexpr double kRelativeInput = 1e-6;
+
+  double length = 1e-9;  // absolute length tolerance, metres
+
+  static Tolerance forSceneSize(double sceneSize) {
+    return Tolerance{kRelativeGeometry * std::max(sceneSize, 1.0)};
+  }
+};
+
+}  // namespace penumbra

@@ -1,0 +1,98 @@
+#include "lighting/kernel_scene.hpp"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+#include "geometry/nishita.hpp"
+
+static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
+static_assert(sizeof(PnOccluder) == 64, "PnOccluder layout must match kernels/shared_types.h");
+
+namespace penumbra {
+
+namespace {
+
+cl_float4 toFloat4(const Vec3& v, double w = 0.0) {
+  cl_float4 f;
+  f.s[0] = static_cast<float>(v.x());
+  f.s[1] = static_cast<float>(v.y());
+  f.s[2] = static_cast<float>(v.z());
+  f.s[3] = static_cast<float>(w);
+  return f;
+}
+
+cl_float4 toFloat4(const Plane& plane) {
+  return toFloat4(plane.normal, plane.offset);
+}
+
+void appendOccluder(KernelScene& packed, const ConvexPolyhedron& shape, int solid,
+                    const ConvexPolygon& face, const Tolerance& tolerance) {
+  if (shape.faces().size() > PN_MAX_OCCLUDER_FACES)
+    throw std::runtime_error(fmt::format("a solid has {} faces; the kernel handles at most {}",
+                                         shape.faces().size(), PN_MAX_OCCLUDER_FACES));
+  PnOccluder o{};
+  o.solid = solid;
+  o.firstPlane = static_cast<int>(packed.planes.size());
+  o.planeCount = static_cast<int>(shape.faces().size());
+  for (const auto& f : shape.faces()) packed.planes.push_back(toFloat4(f.plane));
+  o.firstSeparating = static_cast<int>(packed.planes.size());
+  for (const auto& f : shape.faces())
+    if (nishitaH(f.plane, face, tolerance.length) == Side::Positive)
+      packed.planes.push_back(toFloat4(f.plane));
+  o.separatingCount = static_cast<int>(packed.planes.size()) - o.firstSeparating;
+  o.firstEdge = static_cast<int>(packed.edges.size());
+  o.edgeCount = static_cast<int>(shape.edges().size());
+  for (const auto& e : shape.edges())
+    packed.edges.push_back(cl_int4{{e.from, e.to, e.left, e.right}});
+  o.firstVertex = static_cast<int>(packed.occluderVertices.size());
+  o.vertexCount = static_cast<int>(shape.vertices().size());
+  const Vec3 centre = shape.centroid();
+  double radius = 0.0;
+  for (const Vec3& v : shape.vertices()) {
+    packed.occluderVertices.push_back(toFloat4(v));
+    radius = std::max(radius, (v - centre).norm());
+  }
+  // The sphere is a culling bound: grow it by the kernel's tolerance so float rounding of the
+  // centre never makes it miss a corner.
+  o.bound = toFloat4(centre, radius + packed.epsLength);
+  packed.occluders.push_back(o);
+}
+
+}  // namespace
+
+KernelScene packScene(const Scene& scene) {
+  KernelScene packed;
+  const Tolerance tolerance = Tolerance::forSceneSize(scene.size());
+  packed.epsLength = static_cast<float>(Tolerance::kKernelRelative * std::max(scene.size(), 1.0));
+  for (std::size_t s = 0; s < scene.sources.size(); ++s) {
+    const Source& source = scene.sources[s];
+    for (const ConvexPolygon& face : source.faces) {
+      if (face.size() > PN_MAX_SOURCE_VERTICES)
+        throw std::runtime_error(
+            fmt::format("source '{}' has a face with {} vertices; the kernel "
+                        "handles at most {}",
+                        source.name, face.size(), PN_MAX_SOURCE_VERTICES));
+      PnSourceFace f{};
+      const Plane plane = face.plane();
+      f.plane = toFloat4(plane);
+      f.firstVertex = static_cast<int>(packed.sourceVertices.size());
+      f.vertexCount = face.size();
+      for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(toFloat4(v));
+      f.halfLuminance = static_cast<float>(0.5 * source.luminance);
+      f.source = static_cast<int>(s);
+      f.firstOccluder = static_cast<int>(packed.occluders.size());
+      // The front half-space of the face is the inside of its flipped plane.
+      const Plane back = plane.flipped();
+      for (std::size_t i = 0; i < scene.solids.size(); ++i) {
+        const ConvexPolyhedron clipped = scene.solids[i].shape.clipped(back, tolerance.length);
+        if (!clipped.empty()) appendOccluder(packed, clipped, static_cast<int>(i), face, tolerance);
+      }
+      f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
+      packed.faces.push_back(f);
+    }
+  }
+  return packed;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,17 @@
+#pragma once
+// The independent reference (issue 2, item 5): dense deterministic sampling of each source face
+// (n × n sub-elements, midpoint rule) with exact segment-versus-convex-polyhedron tests, in
+// double precision on the host. Shares no code with the kernel path.
+#include <span>
+#include <vector>
+
+#include "lighting/sample_point.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+// E in lx at every point, summed over all sources.
+std::vector<double> referenceIlluminance(const Scene& scene, std::span<const SamplePoint> points,
+                                         int n);
+
+}  // namespace penumbra

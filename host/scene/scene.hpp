@@ -1,0 +1,75 @@
+#pragma once
+// The scene after parsing and validation: everything in metres, cd/m², lx; sources expanded
+// to emitting convex polygons. Produced by loadScene (scene_loader.hpp); read by every stage.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polyhedron.hpp"
+
+namespace penumbra {
+
+struct Material {
+  std::string name;
+  Vec3 reflectance = Vec3::Constant(0.8);  // diffuse, per RGB channel, each in [0, 1]
+};
+
+struct Solid {
+  std::string name;
+  ConvexPolyhedron shape;
+  int material = -1;  // index into Scene::materials, -1 for none
+};
+
+enum class SourceShape { Polygon, Polyhedron };
+
+// A Lambertian source of uniform luminance. An area source has one face; a polyhedron source
+// has all its faces (every face emits outwards). Each face's vertices run counter-clockwise
+// about its emission direction, so face.normal() is where it emits to.
+struct Source {
+  std::string name;
+  SourceShape shape = SourceShape::Polygon;
+  std::vector<ConvexPolygon> faces;
+  double luminance = 0.0;  // cd/m² (from `flux`: L = Φ / (π·A))
+  Vec3 color = Vec3::Ones();
+  double emittingArea() const;  // m², all faces
+};
+
+enum class GridKind { WorkPlane, Rect, Points };
+
+struct CalculationGrid {
+  std::string name;
+  GridKind kind = GridKind::Points;
+  std::vector<Vec3> positions;  // m
+  std::vector<Vec3> normals;    // unit
+  double spacing = 0.0;         // m; 0 for point lists
+  int columns = 0, rows = 0;    // planar grids: positions are row-major, rows along v
+};
+
+struct Opening {
+  std::string name;
+  std::string wall;  // x0 x1 y0 y1
+  ConvexPolygon
+      inner;  // the hole on the wall's room-side face, counter-clockwise seen from the room
+  ConvexPolygon outer;  // the hole on the wall's outside face, same orientation
+};
+
+struct Room {
+  Vec3 size = Vec3::Zero();  // interior extent; interior corner at the origin
+  double wallThickness = 0.2;
+  std::vector<Opening> openings;
+};
+
+struct Scene {
+  std::filesystem::path file;
+  std::vector<Material> materials;
+  std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0-1, ...)
+  std::vector<Source> sources;
+  std::vector<CalculationGrid> grids;
+  std::optional<Room> room;
+
+  // Diagonal of the bounding box of all geometry (m); the scale of Tolerance.
+  double size() const;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,55 @@
+/* Structs that cross the host/kernel boundary, declared once (DESIGN.md, "Rules of the house").
+ * Plain C with explicit 16-byte-aligned layout; the host static_asserts the sizes. Included by
+ * the host (C++) and pasted in front of every kernel source by cmake/EmbedKernels.cmake. */
+#ifndef PENUMBRA_SHARED_TYPES_H
+#define PENUMBRA_SHARED_TYPES_H
+
+#ifdef __OPENCL_C_VERSION__
+typedef float4 pn_float4;
+typedef int pn_int;
+typedef int4 pn_int4;
+#else
+#include <CL/cl_platform.h>
+typedef cl_float4 pn_float4;
+typedef cl_int pn_int;
+typedef cl_int4 pn_int4;
+#endif
+
+/* Limits the kernel's private arrays are sized for; the host refuses scenes beyond them. */
+#define PN_MAX_SOURCE_VERTICES 256 /* vertices of one emitting face */
+#define PN_MAX_OCCLUDER_FACES 64   /* faces of one occluder (front faces are a 64-bit mask) */
+#define PN_MAX_ACTIVE_OCCLUDERS 64 /* occluders that can shade one point from one face */
+#define PN_MAX_VISIBLE_PIECES 32   /* visible parameter intervals on one edge */
+#define PN_LANES 8                 /* points per work-item, one per float8 lane */
+
+/* Error bits the kernel reports per point (host turns them into an exception). */
+#define PN_ERROR_TOO_MANY_OCCLUDERS 1
+#define PN_ERROR_TOO_MANY_PIECES 2
+
+/* One emitting convex polygon: a polygon source, or one face of a polyhedron source. Its
+ * vertices run counter-clockwise about the emission direction. */
+typedef struct {
+  pn_float4 plane; /* xyz: unit emission direction, w: offset (direction·x on the face) */
+  pn_int firstVertex, vertexCount;
+  pn_int firstOccluder, occluderCount;
+  float halfLuminance; /* L/2 in cd/m²: the factor in front of Lambert's contour integral */
+  pn_int source;       /* index of the scene source */
+  pn_int pad0, pad1;
+} PnSourceFace;
+
+/* A solid clipped to one source face's front half-space. Planes are outward; edges are
+ * (from, to, left face, right face), local to this occluder: `left` is the face whose
+ * counter-clockwise loop runs from -> to. The separating planes are the faces whose closed
+ * outside holds the whole source face: a point in the closed outside of one of them cannot be
+ * shaded by this occluder. */
+typedef struct {
+  pn_float4 bound; /* bounding sphere: xyz centre, w radius */
+  pn_int firstPlane, planeCount;
+  pn_int firstEdge, edgeCount;
+  pn_int firstVertex, vertexCount;
+  pn_int firstSeparating, separatingCount;
+  pn_int solid; /* scene solid it was clipped from */
+  pn_int pad0, pad1, pad2;
+} PnOccluder;
+
+#endif
