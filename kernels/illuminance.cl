@@ -78,8 +78,9 @@ inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float
     az = bz;
     ha = hb;
   }
-  float8 chord = edge_term8(exx, exy, exz, enx, eny, enz, nx, ny, nz);
-  sum += select((float8)(0.0f), chord, has_exit & has_entry);
+  int8 cut = has_exit & has_entry;
+  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
+    sum += select((float8)(0.0f), edge_term8(exx, exy, exz, enx, eny, enz, nx, ny, nz), cut);
   /* Only points strictly in front of the face see it. */
   float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
   return select((float8)(0.0f), sum, front > 0.0f);

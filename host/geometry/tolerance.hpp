@@ -17,6 +17,10 @@ struct Tolerance {
   // Input validation (planarity, convexity, "on its wall") is about what a person typed: 1e-6 of
   // the scene size (a 10 m room: 10 µm).
   static constexpr double kRelativeInput = 1e-6;
+  // How far a typed direction (a polygon's `normal`, a grid's u against v) may be from the one
+  // the geometry implies, in radians: 0.01 rad (0.6°) accepts normals typed with three decimals
+  // and still rejects real mix-ups, which are off by tens of degrees. An angle: not scaled.
+  static constexpr double kInputAngle = 1e-2;
 
   double length = 1e-9;  // absolute length tolerance, metres
 

@@ -44,13 +44,17 @@ std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> 
   std::vector<float> coords[6];
   for (auto& c : coords) c.resize(padded);
   std::vector<cl_int> own(padded);
-  for (std::size_t i = 0; i < padded; ++i) {
-    const SamplePoint& p = points[std::min(i, n - 1)];
+  for (std::size_t i = 0; i < n; ++i) {
+    const SamplePoint& p = points[i];
     for (int k = 0; k < 3; ++k) {
       coords[k][i] = static_cast<float>(p.position[k]);
       coords[3 + k][i] = static_cast<float>(p.normal[k]);
     }
     own[i] = p.solid;
+  }
+  for (std::size_t i = n; i < padded; ++i) {
+    for (auto& c : coords) c[i] = c[n - 1];
+    own[i] = own[n - 1];
   }
   compute::Device& d = *state_->device;
   DeviceBuffer pointBuffers[6];

@@ -63,7 +63,7 @@ struct Room {
 struct Scene {
   std::filesystem::path file;
   std::vector<Material> materials;
-  std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0-1, ...)
+  std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0.1, ...)
   std::vector<Source> sources;
   std::vector<CalculationGrid> grids;
   std::optional<Room> room;

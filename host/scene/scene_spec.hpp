@@ -1,0 +1,110 @@
+#pragma once
+// The scene as written in the file, before any geometry is built: plain numbers, each part with
+// where it came from. Loading is two passes (read, then build) because the tolerances that decide
+// "planar", "convex" or "inside its wall" are relative to the scene's size (DESIGN.md), and that
+// size is known only once every coordinate in the file has been read.
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "geometry/vec.hpp"
+#include "scene/scene.hpp"
+#include "scene/yaml_reader.hpp"
+
+namespace penumbra::scenefile {
+
+// ---- shapes, shared by solids and sources
+
+struct BoxSpec {
+  Vec3 min = Vec3::Zero(), max = Vec3::Zero();
+};
+struct PrismSpec {
+  std::vector<Vec3> base;
+  double height = 0.0;
+  Where baseWhere;
+};
+struct HullSpec {
+  std::vector<Vec3> points;
+};
+struct PolygonSpec {  // sources only
+  std::vector<Vec3> vertices;
+  std::optional<Vec3> normal;  // unit
+  Where normalWhere;
+};
+struct RectSpec {  // sources only
+  Vec3 center = Vec3::Zero();
+  double width = 0.0, height = 0.0;
+  Vec3 normal = Vec3::UnitZ();  // unit
+};
+struct OpeningRefSpec {  // sources only: fills a room opening
+  std::string opening;
+  bool outerPlane = true;
+};
+
+using ShapeSpec = std::variant<BoxSpec, PrismSpec, HullSpec, PolygonSpec, RectSpec, OpeningRefSpec>;
+
+// ---- scene parts
+
+struct OpeningSpec {
+  std::string name;
+  std::string wall;  // x0 x1 y0 y1
+  double along = 0.0, sill = 0.0, width = 0.0, height = 0.0;
+  Where where;
+};
+
+struct RoomSpec {
+  Vec3 size = Vec3::Zero();
+  double wallThickness = 0.2;
+  int floorMaterial = -1, ceilingMaterial = -1, wallMaterial = -1;
+  std::vector<OpeningSpec> openings;
+  Where where;
+};
+
+struct SolidSpec {
+  std::string name;
+  ShapeSpec shape;
+  Where shapeWhere;  // the shape's key, e.g. solids[2].prism
+  int material = -1;
+};
+
+struct SourceSpec {
+  std::string name;
+  ShapeSpec shape;
+  Where shapeWhere;
+  std::optional<double> luminance;  // exactly one of luminance, flux
+  std::optional<double> flux;
+  Vec3 color = Vec3::Ones();
+};
+
+struct WorkPlaneSpec {
+  double height = 0.80;
+  std::optional<double> spacing;  // empty: EN 12464-1 automatic spacing
+  double margin = 0.5;
+  Where heightWhere, marginWhere;  // the grid's entry when the key is not given
+};
+struct RectGridSpec {
+  Vec3 origin = Vec3::Zero(), u = Vec3::UnitX(), v = Vec3::UnitY();
+  std::optional<double> spacing;
+  Where uWhere, vWhere;
+};
+struct PointsSpec {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;  // unit
+};
+
+struct GridSpec {
+  std::string name;
+  std::variant<WorkPlaneSpec, RectGridSpec, PointsSpec> layout;
+  Where where;
+};
+
+struct SceneSpec {
+  std::vector<Material> materials;
+  std::optional<RoomSpec> room;
+  std::vector<SolidSpec> solids;
+  std::vector<SourceSpec> sources;
+  std::vector<GridSpec> grids;
+};
+
+}  // namespace penumbra::scenefile

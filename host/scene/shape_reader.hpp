@@ -1,0 +1,31 @@
+#pragma once
+// Reads the shape of a solid or a source (box, prism, hull; for sources also polygon, rect and
+// opening) from its YAML entry. Only numbers and their ranges are checked here; planarity,
+// convexity and the like need the scene's tolerance and are checked in shape_builder.
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "scene/scene_spec.hpp"
+#include "scene/yaml_reader.hpp"
+
+namespace penumbra::scenefile {
+
+enum class ShapeUse { Solid, Source };
+
+// The one shape key present in `entry` (e.g. "box"); none or several is an error.
+std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse use,
+                            std::string_view what);
+
+// Keys that go with the shape key, beside it in the same entry (a polygon's `normal`,
+// an opening's `plane`).
+std::vector<std::string_view> shapeSiblingKeys(std::string_view shapeKey);
+
+// Reads the shape under `shapeKey` (and its sibling keys) from `entry`.
+std::pair<ShapeSpec, Where> readShape(const Reader& reader, const MapView& entry,
+                                      std::string_view shapeKey);
+
+// Every point the shape mentions (for the scene's extent); rect corners; nothing for openings.
+std::vector<Vec3> shapeExtentPoints(const ShapeSpec& shape);
+
+}  // namespace penumbra::scenefile

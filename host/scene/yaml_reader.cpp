@@ -1,0 +1,210 @@
+#include "scene/yaml_reader.hpp"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "scene/scene_loader.hpp"
+
+namespace penumbra::scenefile {
+namespace {
+
+// yaml-cpp counts lines from 0; people and editors count from 1. A node that is not in the
+// document (a missing key) has no position.
+int lineOf(const YAML::Node& node) {
+  return node.IsDefined() ? node.Mark().line + 1 : 0;
+}
+
+// What a node is, in words, for "expected X, got Y" messages.
+std::string describe(const YAML::Node& node) {
+  if (!node.IsDefined() || node.IsNull()) return "nothing";
+  if (node.IsScalar()) return "'" + node.Scalar() + "'";
+  if (node.IsSequence()) return "a list";
+  if (node.IsMap()) return "a map";
+  return "something else";
+}
+
+std::string joined(const std::vector<std::string_view>& words) {
+  std::string out;
+  for (std::string_view w : words) {
+    if (!out.empty()) out += ", ";
+    out += w;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string childKey(const std::string& parent, std::string_view child) {
+  return parent.empty() ? std::string(child) : parent + "." + std::string(child);
+}
+
+std::string indexKey(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
+}
+
+void fail(const std::filesystem::path& file, const Where& where, const std::string& message) {
+  throw SceneError(file, where.line, where.key, message);
+}
+
+std::string formatNumber(double value) {
+  return fmt::format("{}", value);
+}
+
+std::string formatVec3(const Vec3& v) {
+  return fmt::format("[{}, {}, {}]", v.x(), v.y(), v.z());
+}
+
+// ---- MapView
+
+bool MapView::has(std::string_view key) const {
+  return find(key).has_value();
+}
+
+std::optional<Field> MapView::find(std::string_view key) const {
+  for (const Entry& e : entries_) {
+    if (e.key == key) return e.value;
+  }
+  return std::nullopt;
+}
+
+Field MapView::require(std::string_view key) const {
+  const std::optional<Field> field = find(key);
+  if (!field) {
+    reader_->fail(Where{where_.line, childKey(where_.key, key)},
+                  "missing key '" + std::string(key) + "'");
+  }
+  if (field->node.IsNull()) reader_->fail(field->where, "'" + std::string(key) + "' has no value");
+  return *field;
+}
+
+void MapView::allowOnly(const std::vector<std::string_view>& accepted,
+                        std::string_view what) const {
+  for (const Entry& e : entries_) {
+    bool known = false;
+    for (std::string_view a : accepted) known = known || e.key == a;
+    if (!known) {
+      reader_->fail(e.value.where, "unknown key '" + e.key + "'; " + std::string(what) +
+                                       " accepts: " + joined(accepted));
+    }
+  }
+}
+
+// ---- Reader
+
+void Reader::fail(const Where& where, const std::string& message) const {
+  scenefile::fail(file_, where, message);
+}
+
+Field Reader::root(const YAML::Node& node) const {
+  return Field{node, Where{lineOf(node), ""}};
+}
+
+MapView Reader::map(const Field& field, std::string_view what) const {
+  if (!field.node.IsMap()) {
+    fail(field.where,
+         "expected " + std::string(what) + " as a map (key: value), got " + describe(field.node));
+  }
+  MapView view;
+  view.reader_ = this;
+  view.where_ = field.where;
+  for (const auto& pair : field.node) {
+    const YAML::Node& key = pair.first;
+    if (!key.IsScalar()) fail(Where{lineOf(key), field.where.key}, "a key must be a plain name");
+    const std::string name = key.Scalar();
+    // The key's own line, not the value's: for a block value (a list or map on the following
+    // lines, or an empty value) the key's line is where a person looks.
+    const Where where{lineOf(key), childKey(field.where.key, name)};
+    if (view.has(name)) fail(where, "key '" + name + "' appears twice");
+    view.entries_.push_back(MapView::Entry{name, Field{pair.second, where}});
+  }
+  return view;
+}
+
+std::vector<Field> Reader::list(const Field& field, std::string_view what) const {
+  if (!field.node.IsSequence()) {
+    fail(field.where,
+         "expected " + std::string(what) + " as a list [...], got " + describe(field.node));
+  }
+  std::vector<Field> items;
+  for (std::size_t i = 0; i < field.node.size(); ++i) {
+    const YAML::Node item = field.node[i];
+    items.push_back(Field{item, Where{lineOf(item), indexKey(field.where.key, i)}});
+  }
+  return items;
+}
+
+std::string Reader::text(const Field& field) const {
+  if (!field.node.IsScalar() || field.node.Scalar().empty()) {
+    fail(field.where, "expected a name, got " + describe(field.node));
+  }
+  return field.node.Scalar();
+}
+
+double Reader::number(const Field& field) const {
+  if (!field.node.IsScalar()) fail(field.where, "expected a number, got " + describe(field.node));
+  double value = 0.0;
+  try {
+    value = field.node.as<double>();
+  } catch (const YAML::Exception&) {
+    fail(field.where, "expected a number, got " + describe(field.node));
+  }
+  if (!std::isfinite(value))
+    fail(field.where, "expected a finite number, got " + describe(field.node));
+  return value;
+}
+
+double Reader::nonNegative(const Field& field, std::string_view unit) const {
+  const double value = number(field);
+  if (value < 0.0) {
+    fail(field.where,
+         "must not be negative (got " + formatNumber(value) + " " + std::string(unit) + ")");
+  }
+  return value;
+}
+
+double Reader::positive(const Field& field, std::string_view unit) const {
+  const double value = number(field);
+  if (value <= 0.0) {
+    fail(field.where,
+         "must be greater than 0 (got " + formatNumber(value) + " " + std::string(unit) + ")");
+  }
+  return value;
+}
+
+std::vector<double> Reader::numbers(const Field& field, std::size_t count) const {
+  const std::string expected = "a list of " + std::to_string(count) + " numbers";
+  if (!field.node.IsSequence())
+    fail(field.where, "expected " + expected + ", got " + describe(field.node));
+  if (field.node.size() != count) {
+    fail(field.where,
+         "expected " + expected + ", got " + std::to_string(field.node.size()) + " numbers");
+  }
+  std::vector<double> values;
+  for (const Field& item : list(field, expected)) values.push_back(number(item));
+  return values;
+}
+
+Vec3 Reader::vec3(const Field& field) const {
+  const std::vector<double> v = numbers(field, 3);
+  return Vec3(v[0], v[1], v[2]);
+}
+
+Vec3 Reader::direction(const Field& field) const {
+  const Vec3 v = vec3(field);
+  if (v.norm() == 0.0) fail(field.where, "a direction cannot be the zero vector");
+  return v.normalized();
+}
+
+std::vector<Vec3> Reader::points(const Field& field, std::size_t minimum) const {
+  const std::vector<Field> items = list(field, "a list of points [x, y, z]");
+  if (items.size() < minimum) {
+    fail(field.where, "needs at least " + std::to_string(minimum) + " points [x, y, z], got " +
+                          std::to_string(items.size()));
+  }
+  std::vector<Vec3> out;
+  for (const Field& item : items) out.push_back(vec3(item));
+  return out;
+}
+
+}  // namespace penumbra::scenefile
