@@ -138,12 +138,31 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
  * a source edge never leaks. */
 
 typedef struct {
-  float3 sv[PN_MAX_SOURCE_VERTICES + 2]; /* S' vertices, relative to P */
+  /* S' vertices, relative to P: each clip by a plane adds at most one vertex */
+  float3 sv[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS];
   int ns;
   int active[PN_MAX_ACTIVE_OCCLUDERS];
   ulong front[PN_MAX_ACTIVE_OCCLUDERS]; /* bit f: face f of the occluder sees P */
   int na;
 } PenumbraState;
+
+/* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
+void clip_source(PenumbraState* st, float3 keep) {
+  float3 out[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS];
+  int count = 0;
+  float3 a = st->sv[st->ns - 1];
+  float ha = dot(keep, a);
+  for (int i = 0; i < st->ns; ++i) {
+    float3 b = st->sv[i];
+    float hb = dot(keep, b);
+    if ((ha >= 0.0f) != (hb >= 0.0f)) out[count++] = a + (ha / (ha - hb)) * (b - a);
+    if (hb >= 0.0f) out[count++] = b;
+    a = b;
+    ha = hb;
+  }
+  for (int i = 0; i < count; ++i) st->sv[i] = out[i];
+  st->ns = count;
+}
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
  * on the contour. */
@@ -301,6 +320,48 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, __global con
     ha = hb;
   }
   if (st.ns < 3) return 0.0f;
+
+  /* Solids P touches (P on their surface, not its own solid) have no contour line from P: the
+   * directions into such a solid form the cone {x : f·x < 0 for every face f through P}.
+   * Faces whose closed inside already holds all of S' do not limit that cone within S' (the
+   * floor under a cabinet: the cabinet's bottom face holds everything above the horizon, so
+   * the point is dark). One face left: S' is clipped by it, exactly. None left: P sees nothing
+   * of this face. Two or more (P on an edge or corner that cuts the pyramid to the source, a
+   * set of measure zero): the face most opposed to P's normal is taken. */
+  int contacts = 0;
+  for (int k = 0; k < face.occluderCount; ++k) {
+    PnOccluder o = occluders[face.firstOccluder + k];
+    if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
+    bool on_surface = true, touches = false;
+    int limiting = -1, limits = 0;
+    float opposed = 2.0f;
+    for (int j = 0; j < o.planeCount && on_surface; ++j) {
+      float4 pl = planes[o.firstPlane + j];
+      float d = dot(pl.xyz, p) - pl.w;
+      if (d > eps_length) on_surface = false; /* P outside this face: not on the solid */
+      if (!on_surface || d < -eps_length) continue;
+      touches = true;
+      bool holds_source = true;
+      for (int i = 0; i < st.ns && holds_source; ++i)
+        holds_source = dot(pl.xyz, st.sv[i]) <= PN_EPS_REL * length(st.sv[i]);
+      if (holds_source) continue;
+      ++limits;
+      if (dot(pl.xyz, n) < opposed) {
+        opposed = dot(pl.xyz, n);
+        limiting = j;
+      }
+    }
+    /* Not on the solid, or strictly inside it (the host flags such points). */
+    if (!on_surface || !touches) continue;
+    if (limits == 0) return 0.0f;
+    if (contacts == PN_MAX_CONTACTS) {
+      *error |= PN_ERROR_TOO_MANY_CONTACTS;
+      break;
+    }
+    ++contacts;
+    clip_source(&st, planes[o.firstPlane + limiting].xyz);
+    if (st.ns < 3) return 0.0f;
+  }
 
   /* The occluders that can shade P from this face, with the faces of each that see P. */
   st.na = 0;

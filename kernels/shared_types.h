@@ -20,11 +20,13 @@ typedef cl_int4 pn_int4;
 #define PN_MAX_OCCLUDER_FACES 64   /* faces of one occluder (front faces are a 64-bit mask) */
 #define PN_MAX_ACTIVE_OCCLUDERS 64 /* occluders that can shade one point from one face */
 #define PN_MAX_VISIBLE_PIECES 32   /* visible parameter intervals on one edge */
+#define PN_MAX_CONTACTS 8          /* solids whose surface one point touches (besides its own) */
 #define PN_LANES 8                 /* points per work-item, one per float8 lane */
 
 /* Error bits the kernel reports per point (host turns them into an exception). */
 #define PN_ERROR_TOO_MANY_OCCLUDERS 1
 #define PN_ERROR_TOO_MANY_PIECES 2
+#define PN_ERROR_TOO_MANY_CONTACTS 4
 
 /* One emitting convex polygon: a polygon source, or one face of a polyhedron source. Its
  * vertices run counter-clockwise about the emission direction. */

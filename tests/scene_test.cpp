@@ -19,7 +19,8 @@ namespace fs = std::filesystem;
 
 const fs::path kSourceDir = PENUMBRA_SOURCE_DIR;
 const fs::path kOffice = kSourceDir / "data" / "office.yaml";
-const fs::path kCie171 = kSourceDir / ".." / "shared" / "validation" / "cie171";
+const fs::path kCie171 =
+    kSourceDir / "tests" / "validation" / "cie171";  // copy of shared/validation
 
 // The SceneError that parsing `yaml` throws; fails the test when it parses.
 SceneError errorOf(const std::string& yaml, const fs::path& file = "test.yaml") {

@@ -120,11 +120,11 @@ KernelLaunch& KernelLaunch::arg(unsigned index, float value) {
   return *this;
 }
 
-void KernelLaunch::run(std::size_t globalSize) {
+void KernelLaunch::run(std::size_t globalSize, std::size_t localSize) {
   if (globalSize == 0) return;
   try {
     impl_->device->queue.enqueueNDRangeKernel(impl_->kernel, cl::NullRange, cl::NDRange(globalSize),
-                                              cl::NullRange);
+                                              cl::NDRange(localSize));
     impl_->device->queue.finish();
   } catch (const cl::Error& error) {
     throw std::runtime_error(fmt::format("running kernel {}: {}", impl_->name, describe(error)));

@@ -38,7 +38,10 @@ IlluminanceEngine::~IlluminanceEngine() = default;
 std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> points) {
   const std::size_t n = points.size();
   if (n == 0) return {};
-  const std::size_t groups = (n + PN_LANES - 1) / PN_LANES;
+  // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
+  // KernelLaunch::run for why the work-group size is fixed).
+  constexpr std::size_t kWorkGroup = 16;
+  const std::size_t groups = (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
   const std::size_t padded = groups * PN_LANES;
   // Structure of arrays, one float8 lane per point. Padding repeats the last point.
   std::vector<float> coords[6];
@@ -77,7 +80,7 @@ std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> 
   launch.arg(14, state_->packed.epsLength);
   launch.arg(15, out);
   launch.arg(16, errors);
-  launch.run(groups);
+  launch.run(groups, kWorkGroup);
 
   std::vector<float> e(padded);
   out.download(e.data(), padded * sizeof(float));
@@ -91,6 +94,8 @@ std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> 
         p.position.x(), p.position.y(), p.position.z(),
         (errorBits[g] & PN_ERROR_TOO_MANY_OCCLUDERS)
             ? fmt::format("more than {} occluders shade it", PN_MAX_ACTIVE_OCCLUDERS)
+        : (errorBits[g] & PN_ERROR_TOO_MANY_CONTACTS)
+            ? fmt::format("it touches more than {} solids", PN_MAX_CONTACTS)
             : fmt::format("more than {} visible pieces on one edge", PN_MAX_VISIBLE_PIECES)));
   }
   return std::vector<double>(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));

@@ -1,6 +1,7 @@
 #pragma once
 // The independent reference (issue 2, item 5): dense deterministic sampling of each source face
-// (n × n sub-elements, midpoint rule) with exact segment-versus-convex-polyhedron tests, in
+// (about n² equal cells of a centred Fibonacci lattice, each sampled at its midpoint; the .cpp
+// says why not an n × n grid of cells) with exact segment-versus-convex-polyhedron tests, in
 // double precision on the host. Shares no code with the kernel path.
 #include <span>
 #include <vector>

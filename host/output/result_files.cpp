@@ -1,0 +1,136 @@
+#include "output/result_files.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <stdexcept>
+
+#include "output/staged_directory.hpp"
+
+namespace penumbra {
+
+namespace {
+
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+std::string csvField(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) {
+    if (c == '"') quoted += '"';
+    quoted += c;
+  }
+  return quoted + "\"";
+}
+
+// JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
+nlohmann::json number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+void writeFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw std::runtime_error("cannot create " + path.string());
+  body(out);
+  out.close();
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+}  // namespace
+
+std::string gridFileStem(const std::string& gridName) {
+  std::string stem;
+  for (char c : gridName) {
+    const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                       c == '.' || c == '_' || c == '-';
+    stem += plain ? c : '_';
+  }
+  // "" and names starting with '.' would be hidden or special ("..").
+  if (stem.empty() || stem.front() == '.') stem.insert(0, "grid_");
+  return stem;
+}
+
+std::vector<std::string> resultFileNames(const RunReport& report) {
+  std::vector<std::string> names;
+  std::set<std::string> stems;
+  for (const GridReport& grid : report.grids) {
+    const std::string stem = gridFileStem(grid.name);
+    if (!stems.insert(stem).second) {
+      throw std::runtime_error(fmt::format(
+          "grid '{}' would be written to {}.csv, which another grid uses; rename one of them",
+          grid.name, stem));
+    }
+    names.push_back(stem + ".csv");
+    names.push_back(stem + ".res");
+  }
+  names.push_back("summary.json");
+  return names;
+}
+
+void writeGridCsv(std::ostream& out, const GridReport& grid) {
+  out << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
+  for (std::size_t i = 0; i < grid.points.size(); ++i) {
+    const Vec3& p = grid.points[i].position;
+    const Vec3& n = grid.points[i].normal;
+    out << fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(),
+                       grid.illuminance[i], csvField(grid.insideSolids[i]));
+  }
+}
+
+void writeGridRes(std::ostream& out, const GridReport& grid) {
+  for (double e : grid.illuminance) out << fmt::format("{}\n", e);
+}
+
+nlohmann::json summaryJson(const RunReport& report) {
+  nlohmann::json grids = nlohmann::json::array();
+  for (const GridReport& grid : report.grids) {
+    const GridMetrics& m = grid.metrics;
+    const std::string stem = gridFileStem(grid.name);
+    grids.push_back({
+        {"name", grid.name},
+        {"csv", stem + ".csv"},
+        {"res", stem + ".res"},
+        {"points", m.points},
+        {"points_inside_solids", m.pointsInsideSolids},
+        {"spacing_m", m.spacing > 0.0 ? number(m.spacing) : nlohmann::json(nullptr)},
+        {"Eavg_lx", number(m.eAvg)},
+        {"Emin_lx", number(m.eMin)},
+        {"Emax_lx", number(m.eMax)},
+        {"U0", number(m.u0)},
+        {"Ud", number(m.ud)},
+        {"time_s", grid.seconds},
+    });
+  }
+  nlohmann::json summary = {
+      {"penumbra_version", report.version},
+      {"scene", report.sceneFile.string()},
+      {"estimator", report.estimator},
+      {"device", report.device},
+      {"timing",
+       {{"load_s", report.loadSeconds},
+        {"setup_s", report.setupSeconds},
+        {"total_s", report.totalSeconds}}},
+      {"grids", grids},
+  };
+  if (report.estimator == "reference") summary["reference_n"] = report.referenceN;
+  return summary;
+}
+
+void writeResults(const RunReport& report, const std::filesystem::path& directory) {
+  resultFileNames(report);  // refuses clashing names before anything is created
+  StagedDirectory staged(directory);
+  for (const GridReport& grid : report.grids) {
+    const std::string stem = gridFileStem(grid.name);
+    writeFile(staged.staging() / (stem + ".csv"),
+              [&](std::ostream& out) { writeGridCsv(out, grid); });
+    writeFile(staged.staging() / (stem + ".res"),
+              [&](std::ostream& out) { writeGridRes(out, grid); });
+  }
+  writeFile(staged.staging() / "summary.json",
+            [&](std::ostream& out) { out << summaryJson(report).dump(2) << "\n"; });
+  staged.commit();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,35 @@
+#pragma once
+// The files of a `penumbra grid` run, all in one output directory:
+//   <grid>.csv     x_m,y_m,z_m,nx,ny,nz,E_lx,inside   one row per point, in the grid's order
+//   <grid>.res     E in lx, one value a line, same order (what `rtrace -h -ov` gives Radiance
+//   users) summary.json   scene, device, timing and the metrics of every grid, units in the key
+//   names
+// Numbers are written in the shortest form that reads back to the same double.
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "output/run_report.hpp"
+
+namespace penumbra {
+
+// The file name stem of a grid: its name with every character outside [A-Za-z0-9._-] replaced by
+// '_' (grid names come from the scene; they must not reach outside the output directory).
+std::string gridFileStem(const std::string& gridName);
+
+// The names of the files writeResults creates for `report`. Throws std::runtime_error when two
+// grids would share a file.
+std::vector<std::string> resultFileNames(const RunReport& report);
+
+void writeGridCsv(std::ostream& out, const GridReport& grid);
+void writeGridRes(std::ostream& out, const GridReport& grid);
+nlohmann::json summaryJson(const RunReport& report);
+
+// Writes every file of the run into `directory` atomically (see staged_directory.hpp): either all
+// of them appear, or none does. Throws std::runtime_error or std::filesystem::filesystem_error.
+void writeResults(const RunReport& report, const std::filesystem::path& directory);
+
+}  // namespace penumbra

@@ -1,0 +1,20 @@
+#include "output/run_report.hpp"
+
+namespace penumbra {
+
+GridReport makeGridReport(const Scene& scene, const CalculationGrid& grid,
+                          const GridEvaluation& evaluation) {
+  GridReport report;
+  report.name = evaluation.name;
+  report.points = evaluation.samples.points;
+  report.illuminance = evaluation.illuminance;
+  report.seconds = evaluation.seconds;
+  report.insideSolids.reserve(evaluation.samples.inside.size());
+  for (int solid : evaluation.samples.inside) {
+    report.insideSolids.push_back(solid >= 0 ? scene.solids.at(solid).name : std::string());
+  }
+  report.metrics = gridMetrics(evaluation.illuminance, evaluation.samples.inside, grid.spacing);
+  return report;
+}
+
+}  // namespace penumbra

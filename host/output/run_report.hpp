@@ -1,0 +1,40 @@
+#pragma once
+// What one `penumbra grid` run produced, in the form the output layer writes: self-contained (no
+// Scene needed), so that it can be written, printed and tested on its own.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "lighting/grid_evaluation.hpp"
+#include "lighting/grid_metrics.hpp"
+#include "lighting/sample_point.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+struct GridReport {
+  std::string name;
+  std::vector<SamplePoint> points;        // in the grid's order
+  std::vector<std::string> insideSolids;  // per point: the containing solid's name, "" for none
+  std::vector<double> illuminance;        // lx per point; 0 inside solids
+  GridMetrics metrics;
+  double seconds = 0.0;  // time spent computing E for this grid
+};
+
+struct RunReport {
+  std::string version;              // penumbra's
+  std::filesystem::path sceneFile;  // as given on the command line
+  std::string estimator;            // "kernel" or "reference"
+  int referenceN = 0;               // the reference's n (sub-elements per face ~ n²); 0 for kernel
+  std::string device;               // what computed it, in words
+  double loadSeconds = 0.0;         // reading and validating the scene
+  double setupSeconds = 0.0;        // device selection, program build, scene upload
+  double totalSeconds = 0.0;        // the whole run before writing
+  std::vector<GridReport> grids;
+};
+
+// Joins an evaluation with the scene's solid names and the grid's metrics.
+GridReport makeGridReport(const Scene& scene, const CalculationGrid& grid,
+                          const GridEvaluation& evaluation);
+
+}  // namespace penumbra

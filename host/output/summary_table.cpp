@@ -1,0 +1,74 @@
+#include "output/summary_table.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace penumbra {
+
+namespace {
+
+constexpr const char* kUndefined = "-";
+
+// Illuminance to one decimal like a lighting report, but small values keep three significant
+// digits (a 0.04 lx spill must not read as 0.0).
+std::string lux(double e) {
+  if (!std::isfinite(e)) return kUndefined;
+  return std::fabs(e) >= 10.0 || e == 0.0 ? fmt::format("{:.1f}", e) : fmt::format("{:.3g}", e);
+}
+
+std::string ratio(double u) {
+  return std::isfinite(u) ? fmt::format("{:.3f}", u) : kUndefined;
+}
+
+std::string spacing(double s) {
+  return s > 0.0 ? fmt::format("{:.3g}", s) : kUndefined;
+}
+
+}  // namespace
+
+std::string summaryTable(const RunReport& report) {
+  using Row = std::array<std::string, 8>;
+  std::vector<Row> rows;
+  rows.push_back(
+      {"Grid", "Points", "Spacing [m]", "Eavg [lx]", "Emin [lx]", "Emax [lx]", "U0", "Ud"});
+  for (const GridReport& grid : report.grids) {
+    const GridMetrics& m = grid.metrics;
+    rows.push_back({grid.name, fmt::format("{}", m.points), spacing(m.spacing), lux(m.eAvg),
+                    lux(m.eMin), lux(m.eMax), ratio(m.u0), ratio(m.ud)});
+  }
+  std::array<std::size_t, 8> width{};
+  for (const Row& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  std::string table;
+  const auto appendRow = [&](const Row& row) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c > 0) table += " | ";
+      // Names left, numbers right, as in any report.
+      table += c == 0 ? fmt::format("{:<{}}", row[c], width[c])
+                      : fmt::format("{:>{}}", row[c], width[c]);
+    }
+    table += '\n';
+  };
+  appendRow(rows.front());
+  for (std::size_t c = 0; c < width.size(); ++c) {
+    if (c > 0) table += "-|-";
+    table += std::string(width[c], '-');
+  }
+  table += '\n';
+  for (std::size_t r = 1; r < rows.size(); ++r) appendRow(rows[r]);
+  for (const GridReport& grid : report.grids) {
+    if (grid.metrics.pointsInsideSolids > 0) {
+      table +=
+          fmt::format("{}: {} of {} points lie inside solids (E = 0, left out of the statistics)\n",
+                      grid.name, grid.metrics.pointsInsideSolids, grid.metrics.points);
+    }
+  }
+  return table;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Installs what penumbra needs (Debian 12), builds it, and runs one step:
+#   bash scripts/setup.sh example   the main job on the bundled example scene
+#   bash scripts/setup.sh test      every test through ctest
+#   bash scripts/setup.sh build     only install + build
+# Safe to run again: apt is skipped when every package is present, the build is incremental.
+set -euo pipefail
+
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+ROOT="$(pwd)"
+BUILD="${ROOT}/build"
+
+PACKAGES=(
+  build-essential cmake pkg-config ca-certificates
+  pocl-opencl-icd ocl-icd-opencl-dev opencl-headers opencl-clhpp-headers clinfo
+  libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
+  libgtest-dev libbenchmark-dev
+)
+
+# The step `example` runs: change it here when the example changes (e.g. to a sweep).
+run_example() {
+  "${BUILD}/penumbra" grid data/office.yaml -o out/office
+}
+
+missing_packages() {
+  local pkg
+  for pkg in "${PACKAGES[@]}"; do
+    if [[ "$(dpkg-query -W -f='${db:Status-Status}' "${pkg}" 2>/dev/null || true)" != "installed" ]]; then
+      echo "${pkg}"
+    fi
+  done
+}
+
+install_packages() {
+  local missing
+  mapfile -t missing < <(missing_packages)
+  if ((${#missing[@]} == 0)); then
+    return
+  fi
+  echo "setup: installing ${missing[*]}"
+  local sudo=()
+  if ((EUID != 0)); then
+    if command -v sudo >/dev/null; then
+      sudo=(sudo)
+    else
+      echo "setup: missing packages (${missing[*]}) and not root; install them and run again" >&2
+      exit 1
+    fi
+  fi
+  "${sudo[@]}" apt-get update
+  "${sudo[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends \
+    "${missing[@]}"
+}
+
+# PoCL caches compiled kernels under $HOME/.cache; without a usable HOME, keep them in build/.
+pocl_cache() {
+  if [[ -z "${POCL_CACHE_DIR:-}" ]]; then
+    if [[ -z "${HOME:-}" ]] || ! mkdir -p "${HOME}/.cache" 2>/dev/null || [[ ! -w "${HOME}/.cache" ]]; then
+      export POCL_CACHE_DIR="${BUILD}/pocl-cache"
+      mkdir -p "${POCL_CACHE_DIR}"
+    fi
+  fi
+}
+
+build() {
+  cmake -S "${ROOT}" -B "${BUILD}" -DCMAKE_BUILD_TYPE=Release
+  cmake --build "${BUILD}" -j"$(nproc)"
+}
+
+step="${1:-}"
+case "${step}" in
+  example | test | build) ;;
+  *)
+    echo "usage: bash scripts/setup.sh example|test|build" >&2
+    exit 2
+    ;;
+esac
+
+install_packages
+build
+pocl_cache
+
+case "${step}" in
+  example) run_example ;;
+  test)
+    # PoCL starts one thread per core in every test process; ctest runs two at a time.
+    export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-2}"
+    ctest --test-dir "${BUILD}" --output-on-failure -j2
+    ;;
+  build) ;;
+esac

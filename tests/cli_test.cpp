@@ -1,0 +1,285 @@
+// The `penumbra` binary as a user runs it: exit codes, files, messages.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() /
+            (std::string("penumbra-cli-test-") + info->name() + "-" + std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+struct Result {
+  int status = -1;
+  std::string out, err;
+};
+
+// Runs penumbra with `arguments` (already shell-quoted) in `dir`.
+Result runPenumbra(const fs::path& dir, const std::string& arguments) {
+  const std::string command = "cd '" + dir.string() + "' && '" PENUMBRA_BINARY "' " + arguments +
+                              " > stdout.txt 2> stderr.txt < /dev/null";
+  const int raw = std::system(command.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  r.out = readText(dir / "stdout.txt");
+  r.err = readText(dir / "stderr.txt");
+  fs::remove(dir / "stdout.txt");
+  fs::remove(dir / "stderr.txt");
+  return r;
+}
+
+// A 4 × 4 × 3 m room, a 1 m² ceiling panel and a small table beside the point under it that
+// shades part of the floor. The probe at (1.5, 1.5, 0.5) is inside the table. No floor point
+// lies under the table (where the floor touches it).
+constexpr const char* kScene = R"(penumbra: 1
+room:
+  size: [4.0, 4.0, 3.0]
+  wall_thickness: 0.2
+solids:
+  - {name: table, box: {min: [1.3, 1.3, 0.0], max: [1.7, 1.7, 0.75]}}
+sources:
+  - {name: panel, polygon: [[1.5, 1.5, 3.0], [2.5, 1.5, 3.0], [2.5, 2.5, 3.0], [1.5, 2.5, 3.0]], normal: [0.0, 0.0, -1.0], luminance: 1000.0}
+grids:
+  - {name: floor, rect: {origin: [0.0, 0.0, 0.0], u: [4.0, 0, 0], v: [0, 4.0, 0]}, spacing: 0.5}
+  - {name: probes, points: [[1.5, 1.5, 0.5, 0, 0, 1], [0.5, 0.5, 0.0, 0, 0, 1], [1.5, 1.5, 0.75, 0, 0, 1]]}
+)";
+
+void writeScene(const fs::path& file, const std::string& text = kScene) {
+  std::ofstream(file) << text;
+}
+
+struct CsvRow {
+  double x, y, z, e;
+  std::string inside;
+};
+
+std::vector<CsvRow> readCsv(const fs::path& file) {
+  std::vector<CsvRow> rows;
+  const auto all = lines(readText(file));
+  EXPECT_FALSE(all.empty());
+  if (all.empty()) return rows;
+  EXPECT_EQ(all[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  for (std::size_t i = 1; i < all.size(); ++i) {
+    std::vector<std::string> f(1);
+    for (char c : all[i]) {
+      if (c == ',') {
+        f.emplace_back();
+      } else {
+        f.back() += c;
+      }
+    }
+    EXPECT_EQ(f.size(), 8u) << all[i];
+    if (f.size() != 8) continue;
+    rows.push_back({std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[6]), f[7]});
+  }
+  return rows;
+}
+
+void expectCompleteResults(const fs::path& out, const std::string& estimator) {
+  for (const char* name : {"floor.csv", "floor.res", "probes.csv", "probes.res", "summary.json"}) {
+    EXPECT_TRUE(fs::exists(out / name)) << name;
+  }
+  const auto floor = readCsv(out / "floor.csv");
+  EXPECT_EQ(floor.size(), 64u);  // 8 × 8 cells of 0.5 m
+  const auto res = lines(readText(out / "floor.res"));
+  ASSERT_EQ(res.size(), floor.size());
+  for (std::size_t i = 0; i < floor.size(); ++i) {
+    EXPECT_EQ(std::stod(res[i]), floor[i].e) << "line " << i + 1;
+  }
+  // Row-major, x fastest: point (col, row) is at (0.25 + 0.5·col, 0.25 + 0.5·row). The table
+  // top hides the whole panel from (1.25, 1.25) and part of it from (1.25, 1.75); the mirror
+  // image of that one, (2.75, 1.75), sees all of it.
+  const auto at = [&](int col, int row) { return floor.at(row * 8 + col); };
+  EXPECT_EQ(at(2, 2).x, 1.25);
+  EXPECT_EQ(at(2, 2).y, 1.25);
+  EXPECT_EQ(at(2, 2).e, 0.0);
+  EXPECT_GT(at(2, 3).e, 0.0);
+  EXPECT_LT(at(2, 3).e, 0.99 * at(5, 3).e);
+  const auto probes = readCsv(out / "probes.csv");
+  ASSERT_EQ(probes.size(), 3u);
+  EXPECT_EQ(probes[0].inside, "table");
+  EXPECT_EQ(probes[0].e, 0.0);
+  EXPECT_EQ(probes[1].inside, "");
+  EXPECT_GT(probes[1].e, 0.0);
+  EXPECT_EQ(probes[2].inside, "");  // on the table top, not inside it
+  EXPECT_GT(probes[2].e, probes[1].e);
+
+  const auto summary = nlohmann::json::parse(readText(out / "summary.json"));
+  EXPECT_EQ(summary["estimator"], estimator);
+  EXPECT_EQ(summary["scene"], "scene.yaml");
+  ASSERT_EQ(summary["grids"].size(), 2u);
+  EXPECT_EQ(summary["grids"][0]["name"], "floor");
+  EXPECT_EQ(summary["grids"][0]["points"], 64);
+  EXPECT_EQ(summary["grids"][0]["spacing_m"].get<double>(), 0.5);
+  EXPECT_EQ(summary["grids"][1]["points"], 3);
+  EXPECT_EQ(summary["grids"][1]["points_inside_solids"], 1);
+  // The inside probe is left out: Emin is the floor probe's E.
+  EXPECT_EQ(summary["grids"][1]["Emin_lx"].get<double>(), probes[1].e);
+}
+
+TEST(Cli, GridWithTheReferenceWritesEveryFile) {
+  TempDir dir;
+  writeScene(dir.path() / "scene.yaml");
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 16");
+  ASSERT_EQ(r.status, 0) << r.err;
+  expectCompleteResults(dir.path() / "out", "reference");
+  // The table goes to stdout.
+  EXPECT_NE(r.out.find("Eavg [lx]"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("probes"), std::string::npos);
+}
+
+TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
+  TempDir dir;
+  writeScene(dir.path() / "scene.yaml");
+  const Result kernel = runPenumbra(dir.path(), "grid scene.yaml -o kernel --device cpu -q");
+  if (kernel.status != 0 && kernel.err.find("no OpenCL device") != std::string::npos) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << kernel.err;
+  }
+  ASSERT_EQ(kernel.status, 0) << kernel.err;
+  EXPECT_TRUE(kernel.out.empty()) << "--quiet prints nothing: " << kernel.out;
+  expectCompleteResults(dir.path() / "kernel", "kernel");
+  const Result reference =
+      runPenumbra(dir.path(), "grid scene.yaml -o reference --reference --reference-n 256 -q");
+  ASSERT_EQ(reference.status, 0) << reference.err;
+  const auto a = readCsv(dir.path() / "kernel" / "floor.csv");
+  const auto b = readCsv(dir.path() / "reference" / "floor.csv");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    // The reference's error is O(1/n²) where a point sees the whole panel but O(1/n) in the
+    // table's penumbra; tests/reference_test.cpp and the kernel tests hold both to tighter bounds.
+    EXPECT_NEAR(a[i].e, b[i].e, 1e-2 * b[i].e) << a[i].x << " " << a[i].y;
+  }
+}
+
+TEST(Cli, OnlyTheGridsAskedFor) {
+  TempDir dir;
+  writeScene(dir.path() / "scene.yaml");
+  const Result r = runPenumbra(
+      dir.path(), "grid --grid probes scene.yaml -o out --reference --reference-n 8 -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "out" / "probes.csv"));
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "floor.csv"));
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  EXPECT_EQ(summary["grids"].size(), 1u);
+}
+
+TEST(Cli, AnUnknownGridIsAnErrorAndWritesNothing) {
+  TempDir dir;
+  writeScene(dir.path() / "scene.yaml");
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --grid ceiling");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("ceiling"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("floor"), std::string::npos) << "lists the grids there are: " << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(Cli, ASceneErrorExitsWithTwoAndWritesNothing) {
+  TempDir dir;
+  std::string text = kScene;
+  text.replace(text.find("luminance: 1000.0"), 17, "luminance: -1.0");
+  writeScene(dir.path() / "scene.yaml", text);
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out/nested --reference");
+  EXPECT_EQ(r.status, 2) << r.err;
+  // file:line: key: message, the line being the one of the source.
+  EXPECT_NE(r.err.find("scene.yaml:8: sources[0].luminance: "), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+  std::vector<fs::path> left;
+  for (const auto& entry : fs::directory_iterator(dir.path())) left.push_back(entry.path());
+  EXPECT_EQ(left.size(), 1u) << "only scene.yaml";
+}
+
+TEST(Cli, AMissingSceneFileIsAnError) {
+  TempDir dir;
+  const Result r = runPenumbra(dir.path(), "grid missing.yaml -o out --reference");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("missing.yaml"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(Cli, AnExistingOutputDirectoryKeepsOtherFiles) {
+  TempDir dir;
+  writeScene(dir.path() / "scene.yaml");
+  fs::create_directories(dir.path() / "out");
+  std::ofstream(dir.path() / "out" / "README") << "my notes";
+  const Result r =
+      runPenumbra(dir.path(), "grid scene.yaml -o out/ --reference --reference-n 8 -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(readText(dir.path() / "out" / "README"), "my notes");
+  EXPECT_TRUE(fs::exists(dir.path() / "out" / "summary.json"));
+}
+
+TEST(Cli, HelpTeachesUnitsAndOutputs) {
+  TempDir dir;
+  const Result top = runPenumbra(dir.path(), "--help");
+  EXPECT_EQ(top.status, 0);
+  EXPECT_NE(top.out.find("lx"), std::string::npos) << top.out;
+  EXPECT_NE(top.out.find("grid"), std::string::npos);
+  EXPECT_NE(top.out.find("devices"), std::string::npos);
+  const Result grid = runPenumbra(dir.path(), "grid --help");
+  EXPECT_EQ(grid.status, 0);
+  for (const char* word : {"E_lx", ".res", "summary.json", "Eavg_lx", "--reference-n", "--grid",
+                           "--device", "penumbra grid data/office.yaml -o out/office"}) {
+    EXPECT_NE(grid.out.find(word), std::string::npos) << word;
+  }
+}
+
+TEST(Cli, VersionAndUsageErrors) {
+  TempDir dir;
+  const Result version = runPenumbra(dir.path(), "--version");
+  EXPECT_EQ(version.status, 0);
+  EXPECT_EQ(version.out.rfind("penumbra ", 0), 0u) << version.out;
+  EXPECT_EQ(runPenumbra(dir.path(), "").status, 1);                 // a subcommand is required
+  EXPECT_EQ(runPenumbra(dir.path(), "grid scene.yaml").status, 1);  // -o is required
+  EXPECT_EQ(runPenumbra(dir.path(), "frobnicate").status, 1);
+}
+
+TEST(Cli, DevicesListsWhatGridCanUse) {
+  TempDir dir;
+  const Result r = runPenumbra(dir.path(), "devices");
+  if (r.status == 1) GTEST_SKIP() << "no OpenCL device: " << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = lines(r.out);
+  ASSERT_GE(rows.size(), 2u);
+  for (const char* column : {"Index", "Type", "Name", "Platform", "Compute units"}) {
+    EXPECT_NE(rows[0].find(column), std::string::npos) << column;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,375 @@
+// Grid evaluation, metrics and the output layer, without the loader and without OpenCL: scenes
+// are built by hand and the estimator is a stand-in.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "lighting/grid_evaluation.hpp"
+#include "lighting/grid_metrics.hpp"
+#include "output/result_files.hpp"
+#include "output/run_report.hpp"
+#include "output/staged_directory.hpp"
+#include "output/summary_table.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh directory per test process (ctest runs tests in parallel, one process each).
+class TempDir {
+ public:
+  TempDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = fs::temp_directory_path() / (std::string("penumbra-output-test-") + info->name() + "-" +
+                                         std::to_string(::getpid()));
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() { fs::remove_all(path_); }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+std::string readText(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> result;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) result.push_back(line);
+  return result;
+}
+
+// Splits one CSV record, honouring RFC 4180 quotes.
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        fields.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        fields.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Metrics
+
+TEST(GridMetrics, HandComputedValuesWithPointsInsideSolidsLeftOut) {
+  // The 0 lx point lies inside a solid: it must not become Emin.
+  const std::vector<double> e{100.0, 200.0, 0.0, 300.0, 50.0};
+  const std::vector<int> inside{-1, -1, 2, -1, -1};
+  const GridMetrics m = gridMetrics(e, inside, 0.25);
+  EXPECT_EQ(m.points, 5u);
+  EXPECT_EQ(m.pointsInsideSolids, 1u);
+  EXPECT_DOUBLE_EQ(m.spacing, 0.25);
+  EXPECT_DOUBLE_EQ(m.eAvg, 162.5);  // (100 + 200 + 300 + 50) / 4
+  EXPECT_DOUBLE_EQ(m.eMin, 50.0);
+  EXPECT_DOUBLE_EQ(m.eMax, 300.0);
+  EXPECT_DOUBLE_EQ(m.u0, 50.0 / 162.5);
+  EXPECT_DOUBLE_EQ(m.ud, 50.0 / 300.0);
+}
+
+TEST(GridMetrics, UndefinedRatiosAreNaN) {
+  const std::vector<double> dark{0.0, 0.0};
+  const std::vector<int> outside{-1, -1};
+  const GridMetrics m = gridMetrics(dark, outside, 0.5);
+  EXPECT_EQ(m.eAvg, 0.0);
+  EXPECT_TRUE(std::isnan(m.u0));
+  EXPECT_TRUE(std::isnan(m.ud));
+
+  const std::vector<int> allInside{0, 1};
+  const GridMetrics none = gridMetrics(dark, allInside, 0.5);
+  EXPECT_EQ(none.pointsInsideSolids, 2u);
+  EXPECT_TRUE(std::isnan(none.eAvg));
+  EXPECT_TRUE(std::isnan(none.eMin));
+}
+
+// ---------------------------------------------------------------------------------------------
+// Grid evaluation
+
+// A floor slab with a table standing on it.
+Scene floorAndTable() {
+  Scene scene;
+  scene.solids.push_back(
+      Solid{"floor", ConvexPolyhedron::box({-1.0, -1.0, -0.2}, {5.0, 5.0, 0.0}), -1});
+  scene.solids.push_back(
+      Solid{"table", ConvexPolyhedron::box({1.0, 1.0, 0.0}, {2.0, 2.0, 0.75}), -1});
+  return scene;
+}
+
+CalculationGrid pointList(const std::vector<Vec3>& positions, const Vec3& normal) {
+  CalculationGrid grid;
+  grid.name = "probes";
+  grid.positions = positions;
+  grid.normals.assign(positions.size(), normal);
+  return grid;
+}
+
+TEST(GridEvaluation, FindsTheSolidEachPointLiesOnAndTheOneContainingIt) {
+  const Scene scene = floorAndTable();
+  const CalculationGrid grid = pointList({{3.0, 3.0, 0.0},   // on the floor
+                                          {1.5, 1.5, 0.75},  // on the table top
+                                          {1.5, 1.5, 0.4},   // inside the table
+                                          {3.0, 3.0, 1.0},   // in the air
+                                          {1.5, 1.5, 0.0}},  // on the floor, under the table
+                                         Vec3::UnitZ());
+  const GridSamples samples = gridSamples(scene, grid);
+  ASSERT_EQ(samples.points.size(), 5u);
+  EXPECT_EQ(samples.points[0].solid, 0);
+  EXPECT_EQ(samples.points[1].solid, 1);
+  EXPECT_EQ(samples.points[3].solid, -1);
+  // Under the table the point touches both; it looks up, like the floor's top face, so it lies
+  // on the floor and the table can still shade it.
+  EXPECT_EQ(samples.points[4].solid, 0);
+  EXPECT_EQ(samples.inside, (std::vector<int>{-1, -1, 1, -1, -1}));
+}
+
+TEST(GridEvaluation, APointTypedOnASurfaceIsOnItEvenIfRoundedSlightlyInside) {
+  // 0.72 + 0.03 in double is a hair below 0.75; the sensor is still on the table top, not in it.
+  const Scene scene = floorAndTable();
+  const CalculationGrid grid = pointList({{1.5, 1.5, 0.75 - 1e-9}}, Vec3::UnitZ());
+  const GridSamples samples = gridSamples(scene, grid);
+  EXPECT_EQ(samples.points[0].solid, 1);
+  EXPECT_EQ(samples.inside[0], -1);
+}
+
+TEST(GridEvaluation, PointsInsideSolidsGetZeroAndNeverReachTheEstimator) {
+  const Scene scene = floorAndTable();
+  std::vector<Vec3> positions;
+  for (int i = 0; i < 7; ++i) positions.emplace_back(1.1 + 0.4 * i, 1.5, 0.4);  // 1.1..3.5
+  const CalculationGrid grid = pointList(positions, Vec3::UnitZ());
+  std::size_t estimated = 0;
+  const IlluminanceEstimator byX = [&](std::span<const SamplePoint> points) {
+    std::vector<double> e;
+    for (const SamplePoint& p : points) {
+      EXPECT_GT(p.position.x(), 2.0) << "a point inside the table reached the estimator";
+      e.push_back(100.0 * p.position.x());
+    }
+    estimated += points.size();
+    return e;
+  };
+  std::vector<std::pair<std::size_t, std::size_t>> reports;
+  const GridEvaluation evaluation =
+      evaluateGrid(scene, grid, byX, 2,
+                   [&](std::size_t done, std::size_t total) { reports.emplace_back(done, total); });
+  EXPECT_EQ(estimated, 4u);  // x = 2.3, 2.7, 3.1, 3.5
+  ASSERT_EQ(evaluation.illuminance.size(), 7u);
+  for (std::size_t i = 0; i < 7; ++i) {
+    const double x = positions[i].x();
+    EXPECT_DOUBLE_EQ(evaluation.illuminance[i], x < 2.0 ? 0.0 : 100.0 * x) << i;
+  }
+  ASSERT_FALSE(reports.empty());
+  EXPECT_EQ(reports.back(), std::make_pair(std::size_t{7}, std::size_t{7}));
+  for (std::size_t i = 1; i < reports.size(); ++i)
+    EXPECT_GE(reports[i].first, reports[i - 1].first);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Files
+
+GridReport handMadeGrid(const std::string& name) {
+  GridReport grid;
+  grid.name = name;
+  grid.points = {{Vec3(0.1, 0.2, 0.8), Vec3::UnitZ(), -1},
+                 {Vec3(1.0 / 3.0, 2.5, 0.8), Vec3(0.0, 0.6, 0.8), 2},
+                 {Vec3(-1.25, 1e-7, 0.8), Vec3::UnitZ(), -1}};
+  grid.illuminance = {512.3456789012345, 0.0, 1.0 / 7.0};
+  grid.insideSolids = {"", "cabinet, \"tall\"", ""};
+  grid.metrics = gridMetrics(grid.illuminance, std::vector<int>{-1, 3, -1}, 0.5);
+  grid.seconds = 0.125;
+  return grid;
+}
+
+RunReport handMadeRun() {
+  RunReport run;
+  run.version = "9.9.9";
+  run.sceneFile = "data/office.yaml";
+  run.estimator = "reference";
+  run.referenceN = 16;
+  run.device = "host reference";
+  run.loadSeconds = 0.01;
+  run.setupSeconds = 0.02;
+  run.totalSeconds = 0.5;
+  run.grids = {handMadeGrid("work-plane"), handMadeGrid("desk top")};
+  return run;
+}
+
+TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
+  TempDir dir;
+  const RunReport run = handMadeRun();
+  writeResults(run, dir.path() / "out");
+  for (const GridReport& grid : run.grids) {
+    const std::string stem = gridFileStem(grid.name);
+    const auto csv = lines(readText(dir.path() / "out" / (stem + ".csv")));
+    ASSERT_EQ(csv.size(), grid.points.size() + 1);
+    EXPECT_EQ(csv[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+    const auto res = lines(readText(dir.path() / "out" / (stem + ".res")));
+    ASSERT_EQ(res.size(), grid.points.size());
+    for (std::size_t i = 0; i < grid.points.size(); ++i) {
+      const auto f = csvFields(csv[i + 1]);
+      ASSERT_EQ(f.size(), 8u) << csv[i + 1];
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(std::stod(f[k]), grid.points[i].position[k]);
+        EXPECT_EQ(std::stod(f[3 + k]), grid.points[i].normal[k]);
+      }
+      EXPECT_EQ(std::stod(f[6]), grid.illuminance[i]);  // exact: shortest round-trip form
+      EXPECT_EQ(f[7], grid.insideSolids[i]);
+      EXPECT_EQ(std::stod(res[i]), grid.illuminance[i]);
+    }
+  }
+}
+
+TEST(ResultFiles, SummaryJsonReadsBack) {
+  TempDir dir;
+  const RunReport run = handMadeRun();
+  writeResults(run, dir.path() / "out");
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  EXPECT_EQ(summary["scene"], "data/office.yaml");
+  EXPECT_EQ(summary["estimator"], "reference");
+  EXPECT_EQ(summary["reference_n"], 16);
+  EXPECT_EQ(summary["device"], "host reference");
+  EXPECT_EQ(summary["penumbra_version"], "9.9.9");
+  EXPECT_EQ(summary["timing"]["total_s"].get<double>(), 0.5);
+  ASSERT_EQ(summary["grids"].size(), 2u);
+  const auto& g = summary["grids"][1];
+  const GridMetrics& m = run.grids[1].metrics;
+  EXPECT_EQ(g["name"], "desk top");
+  EXPECT_EQ(g["csv"], "desk_top.csv");
+  EXPECT_EQ(g["res"], "desk_top.res");
+  EXPECT_EQ(g["points"].get<std::size_t>(), 3u);
+  EXPECT_EQ(g["points_inside_solids"].get<std::size_t>(), 1u);
+  EXPECT_EQ(g["spacing_m"].get<double>(), 0.5);
+  EXPECT_EQ(g["Eavg_lx"].get<double>(), m.eAvg);
+  EXPECT_EQ(g["Emin_lx"].get<double>(), m.eMin);
+  EXPECT_EQ(g["Emax_lx"].get<double>(), m.eMax);
+  EXPECT_EQ(g["U0"].get<double>(), m.u0);
+  EXPECT_EQ(g["Ud"].get<double>(), m.ud);
+  EXPECT_EQ(g["time_s"].get<double>(), 0.125);
+}
+
+TEST(ResultFiles, UndefinedMetricsAreNullInJson) {
+  RunReport run = handMadeRun();
+  run.grids.resize(1);
+  run.grids[0].illuminance.assign(3, 0.0);
+  run.grids[0].metrics = gridMetrics(run.grids[0].illuminance, std::vector<int>{-1, -1, -1}, 0.0);
+  const auto g = summaryJson(run)["grids"][0];
+  EXPECT_TRUE(g["U0"].is_null());
+  EXPECT_TRUE(g["Ud"].is_null());
+  EXPECT_TRUE(g["spacing_m"].is_null());  // a point list has no spacing
+  EXPECT_EQ(g["Eavg_lx"].get<double>(), 0.0);
+}
+
+TEST(ResultFiles, GridNamesCannotEscapeTheDirectory) {
+  EXPECT_EQ(gridFileStem("work-plane_2.a"), "work-plane_2.a");
+  EXPECT_EQ(gridFileStem("../etc/passwd"), "grid_.._etc_passwd");
+  EXPECT_EQ(gridFileStem("a/b c"), "a_b_c");
+  EXPECT_EQ(gridFileStem(""), "grid_");
+}
+
+TEST(ResultFiles, ClashingGridFileNamesAreRefusedBeforeAnythingIsWritten) {
+  TempDir dir;
+  RunReport run = handMadeRun();
+  run.grids = {handMadeGrid("a b"), handMadeGrid("a/b")};  // both a_b
+  EXPECT_THROW(writeResults(run, dir.path() / "out"), std::runtime_error);
+  EXPECT_FALSE(fs::exists(dir.path() / "out"));
+}
+
+TEST(ResultFiles, AnExistingDirectoryKeepsTheFilesPenumbraDidNotWrite) {
+  TempDir dir;
+  const fs::path out = dir.path() / "out";
+  fs::create_directories(out);
+  std::ofstream(out / "notes.txt") << "mine";
+  std::ofstream(out / "work-plane.res") << "stale";
+  writeResults(handMadeRun(), out);
+  EXPECT_EQ(readText(out / "notes.txt"), "mine");
+  EXPECT_NE(readText(out / "work-plane.res"), "stale");
+  // Nothing but the results and the notes: no staging directory left behind.
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"desk_top.csv", "desk_top.res", "notes.txt",
+                                             "summary.json", "work-plane.csv", "work-plane.res"}));
+}
+
+TEST(ResultFiles, NewDirectoriesAppearWholeAndNothingElseIsLeft) {
+  TempDir dir;
+  const fs::path out = dir.path() / "deeper" / "out/";  // trailing separator, missing parent
+  writeResults(handMadeRun(), out);
+  EXPECT_TRUE(fs::exists(dir.path() / "deeper" / "out" / "summary.json"));
+  std::vector<std::string> siblings;
+  for (const auto& entry : fs::directory_iterator(dir.path() / "deeper")) {
+    siblings.push_back(entry.path().filename());
+  }
+  EXPECT_EQ(siblings, std::vector<std::string>{"out"});
+}
+
+TEST(StagedDirectory, AnUncommittedRunLeavesNothingBehind) {
+  TempDir dir;
+  const fs::path out = dir.path() / "new" / "out";
+  {
+    StagedDirectory staged(out);
+    std::ofstream(staged.staging() / "half.csv") << "x_m";
+  }
+  EXPECT_FALSE(fs::exists(dir.path() / "new"));
+}
+
+TEST(StagedDirectory, AFileInTheWayIsAnError) {
+  TempDir dir;
+  std::ofstream(dir.path() / "out") << "not a directory";
+  EXPECT_THROW(checkOutputTarget(dir.path() / "out"), std::runtime_error);
+  EXPECT_THROW(writeResults(handMadeRun(), dir.path() / "out"), std::runtime_error);
+  EXPECT_EQ(readText(dir.path() / "out"), "not a directory");
+}
+
+// ---------------------------------------------------------------------------------------------
+// Table
+
+TEST(SummaryTable, HasTheColumnsAndOneRowPerGrid) {
+  const std::string table = summaryTable(handMadeRun());
+  const auto rows = lines(table);
+  ASSERT_GE(rows.size(), 4u);
+  for (const char* column :
+       {"Grid", "Points", "Spacing [m]", "Eavg [lx]", "Emin [lx]", "Emax [lx]", "U0", "Ud"}) {
+    EXPECT_NE(rows[0].find(column), std::string::npos) << column;
+  }
+  EXPECT_EQ(rows[2].rfind("work-plane", 0), 0u);
+  EXPECT_EQ(rows[3].rfind("desk top", 0), 0u);
+  // Eavg of (512.35 + 1/7) / 2 = 256.2 lx to one decimal; U0 = (1/7) / Eavg.
+  EXPECT_NE(rows[2].find("256.2"), std::string::npos) << rows[2];
+  EXPECT_NE(table.find("1 of 3 points lie inside solids"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace penumbra
