@@ -73,8 +73,8 @@ std::vector<SamplePoint> workPlane(int count) {
   std::vector<SamplePoint> points;
   for (int j = 0; j < side; ++j)
     for (int i = 0; i < side; ++i)
-      points.push_back({Vec3(6.0 * (i + 0.5) / side, 4.0 * (j + 0.5) / side, 0.8), Vec3::UnitZ(),
-                        -1});
+      points.push_back(
+          {Vec3(6.0 * (i + 0.5) / side, 4.0 * (j + 0.5) / side, 0.8), Vec3::UnitZ(), -1});
   return points;
 }
 
@@ -91,13 +91,16 @@ void run(const std::string& name, const Scene& scene, compute::Device& device, i
   engine.illuminance(std::span(points).first(64));  // warm-up: first launch, caches
   double best = 1e30;
   std::vector<double> e;
-  for (int r = 0; r < repeat; ++r) best = std::min(best, seconds([&] { e = engine.illuminance(points); }));
+  for (int r = 0; r < repeat; ++r)
+    best = std::min(best, seconds([&] { e = engine.illuminance(points); }));
   const double pointSources = static_cast<double>(points.size()) * scene.sources.size();
 
   // The reference on a subset (it is slow), scaled to a rate.
-  const std::vector<SamplePoint> subset(points.begin(), points.begin() + std::min<std::size_t>(referencePoints, points.size()));
+  const std::vector<SamplePoint> subset(
+      points.begin(), points.begin() + std::min<std::size_t>(referencePoints, points.size()));
   const double referenceSeconds = seconds([&] { referenceIlluminance(scene, subset, 64); });
-  const double referenceRate = static_cast<double>(subset.size()) * scene.sources.size() / referenceSeconds;
+  const double referenceRate =
+      static_cast<double>(subset.size()) * scene.sources.size() / referenceSeconds;
 
   int shaded = 0;
   Scene open = scene;
@@ -127,9 +130,12 @@ int main(int argc, char** argv) {
   std::string deviceSpec = "cpu";
   int points = 256 * 256, repeat = 3;
   for (int i = 1; i + 1 < argc; i += 2) {
-    if (!std::strcmp(argv[i], "--device")) deviceSpec = argv[i + 1];
-    else if (!std::strcmp(argv[i], "--points")) points = std::atoi(argv[i + 1]);
-    else if (!std::strcmp(argv[i], "--repeat")) repeat = std::atoi(argv[i + 1]);
+    if (!std::strcmp(argv[i], "--device"))
+      deviceSpec = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--points"))
+      points = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--repeat"))
+      repeat = std::atoi(argv[i + 1]);
   }
   compute::Device device = compute::Device::select(deviceSpec);
   run("unoccluded", unoccludedScene(), device, points, repeat, 2000);

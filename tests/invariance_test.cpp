@@ -23,8 +23,8 @@ compute::Device& cpuDevice() {
 std::string polygonText(std::vector<Vec3> v) {
   std::string text = "[";
   for (std::size_t i = 0; i < v.size(); ++i)
-    text += (i ? ", [" : "[") + std::to_string(v[i].x()) + ", " + std::to_string(v[i].y()) +
-            ", " + std::to_string(v[i].z()) + "]";
+    text += (i ? ", [" : "[") + std::to_string(v[i].x()) + ", " + std::to_string(v[i].y()) + ", " +
+            std::to_string(v[i].z()) + "]";
   return text + "]";
 }
 
@@ -33,9 +33,12 @@ Scene sceneWith(const std::vector<Vec3>& source, const std::vector<Vec3>& shelfB
   const std::string yaml =
       "penumbra: 1\n"
       "solids:\n"
-      "  - {name: shelf, prism: {base: " + polygonText(shelfBase) + ", height: 0.1}}\n"
+      "  - {name: shelf, prism: {base: " +
+      polygonText(shelfBase) +
+      ", height: 0.1}}\n"
       "sources:\n"
-      "  - {name: panel, polygon: " + polygonText(source) +
+      "  - {name: panel, polygon: " +
+      polygonText(source) +
       ", normal: [0, 0, -1], luminance: 2000}\n"
       "grids:\n"
       "  - {name: floor, rect: {origin: [-1.5, -1.5, 0], u: [3, 0, 0], v: [0, 3, 0]}, "
@@ -53,11 +56,14 @@ std::vector<double> floorE(const Scene& scene) {
 }
 
 TEST(Invariance, VertexOrderAndStartVertexChangeNothing) {
-  std::vector<Vec3> panel = {{-0.4, -0.3, 2.5}, {0.5, -0.3, 2.5}, {0.6, 0.4, 2.5}, {-0.4, 0.4, 2.5}};
-  std::vector<Vec3> shelf = {{-0.2, -0.6, 1.2}, {0.4, -0.6, 1.2}, {0.4, 0.1, 1.2}, {-0.2, 0.1, 1.2}};
+  std::vector<Vec3> panel = {
+      {-0.4, -0.3, 2.5}, {0.5, -0.3, 2.5}, {0.6, 0.4, 2.5}, {-0.4, 0.4, 2.5}};
+  std::vector<Vec3> shelf = {
+      {-0.2, -0.6, 1.2}, {0.4, -0.6, 1.2}, {0.4, 0.1, 1.2}, {-0.2, 0.1, 1.2}};
   const std::vector<double> reference = floorE(sceneWith(panel, shelf));
   int shaded = 0;
-  for (double e : reference) shaded += e < 0.999 * *std::max_element(reference.begin(), reference.end());
+  for (double e : reference)
+    shaded += e < 0.999 * *std::max_element(reference.begin(), reference.end());
   ASSERT_GT(shaded, 10);
   for (int variant = 0; variant < 6; ++variant) {
     std::vector<Vec3> p = panel, s = shelf;
@@ -68,7 +74,8 @@ TEST(Invariance, VertexOrderAndStartVertexChangeNothing) {
     const std::vector<double> e = floorE(sceneWith(p, s));
     ASSERT_EQ(e.size(), reference.size());
     for (std::size_t i = 0; i < e.size(); ++i)
-      EXPECT_NEAR(e[i], reference[i], 1e-5 * reference[i] + 1e-6) << "variant " << variant << " point " << i;
+      EXPECT_NEAR(e[i], reference[i], 1e-5 * reference[i] + 1e-6)
+          << "variant " << variant << " point " << i;
   }
 }
 

@@ -21,8 +21,9 @@ std::vector<double> readRes(const fs::path& file) {
 }
 
 fs::path runWithThreads(int threads) {
-  const fs::path out = fs::temp_directory_path() /
-                       ("penumbra-threads-" + std::to_string(::getpid()) + "-" + std::to_string(threads));
+  const fs::path out =
+      fs::temp_directory_path() /
+      ("penumbra-threads-" + std::to_string(::getpid()) + "-" + std::to_string(threads));
   fs::remove_all(out);
   const std::string command = "POCL_MAX_PTHREAD_COUNT=" + std::to_string(threads) + " \"" +
                               PENUMBRA_BINARY + "\" grid \"" + PENUMBRA_SOURCE_DIR +

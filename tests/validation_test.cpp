@@ -1,5 +1,6 @@
 // CIE 171:2006 analytical test cases (tests/validation/cie171, a copy of the product owner's
-// shared/validation/cie171): each scene loaded from its file, evaluated by the kernel, compared point by point with the exact E in the CSV beside it.
+// shared/validation/cie171): each scene loaded from its file, evaluated by the kernel, compared
+// point by point with the exact E in the CSV beside it.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -76,15 +77,14 @@ TEST_P(Cie171, KernelMatchesTheExactValues) {
     const double error = std::abs(r.illuminance[i] - v.e);
     worst = std::max(worst, error / maximum);
     EXPECT_LE(error, kRelativeToCaseMaximum * maximum)
-        << name << " " << v.grid << " point " << v.position.transpose() << ": E = "
-        << r.illuminance[i] << " lx, exact " << v.e << " lx";
+        << name << " " << v.grid << " point " << v.position.transpose()
+        << ": E = " << r.illuminance[i] << " lx, exact " << v.e << " lx";
   }
   std::printf("  %s: %zu points, max |E - E_exact| = %.2e of the case maximum (%.3f lx)\n",
               name.c_str(), exact.size(), worst, maximum);
 }
 
-INSTANTIATE_TEST_SUITE_P(Validation, Cie171,
-                         ::testing::Values("tc5.3", "tc5.6", "tc5.7", "tc5.11"),
+INSTANTIATE_TEST_SUITE_P(Validation, Cie171, ::testing::Values("tc5.3", "tc5.6", "tc5.7", "tc5.11"),
                          [](const auto& info) {
                            std::string n = info.param;
                            for (char& c : n)
