@@ -12,39 +12,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_files.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            (std::string("penumbra-cli-test-") + info->name() + "-" + std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
+using penumbra::testing::lines;
+using penumbra::testing::readText;
+using penumbra::testing::TempDir;
 
 struct Result {
   int status = -1;
@@ -155,7 +131,7 @@ void expectCompleteResults(const fs::path& out, const std::string& estimator) {
 }
 
 TEST(Cli, GridWithTheReferenceWritesEveryFile) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
   const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 16");
   ASSERT_EQ(r.status, 0) << r.err;
@@ -166,7 +142,7 @@ TEST(Cli, GridWithTheReferenceWritesEveryFile) {
 }
 
 TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
   const Result kernel = runPenumbra(dir.path(), "grid scene.yaml -o kernel --device cpu -q");
   if (kernel.status != 0 && kernel.err.find("no OpenCL device") != std::string::npos) {
@@ -189,7 +165,7 @@ TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
 }
 
 TEST(Cli, OnlyTheGridsAskedFor) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
   const Result r = runPenumbra(
       dir.path(), "grid --grid probes scene.yaml -o out --reference --reference-n 8 -q");
@@ -201,7 +177,7 @@ TEST(Cli, OnlyTheGridsAskedFor) {
 }
 
 TEST(Cli, AnUnknownGridIsAnErrorAndWritesNothing) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
   const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --grid ceiling");
   EXPECT_EQ(r.status, 1);
@@ -211,7 +187,7 @@ TEST(Cli, AnUnknownGridIsAnErrorAndWritesNothing) {
 }
 
 TEST(Cli, ASceneErrorExitsWithTwoAndWritesNothing) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   std::string text = kScene;
   text.replace(text.find("luminance: 1000.0"), 17, "luminance: -1.0");
   writeScene(dir.path() / "scene.yaml", text);
@@ -226,7 +202,7 @@ TEST(Cli, ASceneErrorExitsWithTwoAndWritesNothing) {
 }
 
 TEST(Cli, AMissingSceneFileIsAnError) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   const Result r = runPenumbra(dir.path(), "grid missing.yaml -o out --reference");
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.err.find("missing.yaml"), std::string::npos) << r.err;
@@ -234,7 +210,7 @@ TEST(Cli, AMissingSceneFileIsAnError) {
 }
 
 TEST(Cli, AnExistingOutputDirectoryKeepsOtherFiles) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
   fs::create_directories(dir.path() / "out");
   std::ofstream(dir.path() / "out" / "README") << "my notes";
@@ -246,7 +222,7 @@ TEST(Cli, AnExistingOutputDirectoryKeepsOtherFiles) {
 }
 
 TEST(Cli, HelpTeachesUnitsAndOutputs) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   const Result top = runPenumbra(dir.path(), "--help");
   EXPECT_EQ(top.status, 0);
   EXPECT_NE(top.out.find("lx"), std::string::npos) << top.out;
@@ -261,7 +237,7 @@ TEST(Cli, HelpTeachesUnitsAndOutputs) {
 }
 
 TEST(Cli, VersionAndUsageErrors) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   const Result version = runPenumbra(dir.path(), "--version");
   EXPECT_EQ(version.status, 0);
   EXPECT_EQ(version.out.rfind("penumbra ", 0), 0u) << version.out;
@@ -271,7 +247,7 @@ TEST(Cli, VersionAndUsageErrors) {
 }
 
 TEST(Cli, DevicesListsWhatGridCanUse) {
-  TempDir dir;
+  TempDir dir("penumbra-cli-test");
   const Result r = runPenumbra(dir.path(), "devices");
   if (r.status == 1) GTEST_SKIP() << "no OpenCL device: " << r.err;
   ASSERT_EQ(r.status, 0) << r.err;

@@ -4,8 +4,8 @@
 #include <numbers>
 #include <random>
 
-#include "cl/device.hpp"
 #include "lighting/illuminance_engine.hpp"
+#include "test_device.hpp"
 #include "test_scenes.hpp"
 
 namespace penumbra {
@@ -15,11 +15,6 @@ using namespace penumbra::testing;
 constexpr double kPi = std::numbers::pi;
 // Closed forms are met to 1e-5 relative (issue 2): float kernels, 2^-24 rounding per operation.
 constexpr double kClosedFormRelative = 1e-5;
-
-compute::Device& cpuDevice() {
-  static compute::Device device = compute::Device::select("cpu");
-  return device;
-}
 
 std::vector<double> kernelE(const Scene& scene, const std::vector<SamplePoint>& points) {
   IlluminanceEngine engine(cpuDevice(), scene);

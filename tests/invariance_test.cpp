@@ -5,20 +5,15 @@
 #include <algorithm>
 #include <numbers>
 
-#include "cl/device.hpp"
 #include "lighting/illuminance_engine.hpp"
 #include "scene/scene_loader.hpp"
+#include "test_device.hpp"
 #include "test_scenes.hpp"
 
 namespace penumbra {
 namespace {
 
 using namespace penumbra::testing;
-
-compute::Device& cpuDevice() {
-  static compute::Device device = compute::Device::select("cpu");
-  return device;
-}
 
 std::string polygonText(std::vector<Vec3> v) {
   std::string text = "[";

@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "cl/device.hpp"
 #include "lighting/illuminance_engine.hpp"
 #include "reference/reference_illuminance.hpp"
+#include "test_device.hpp"
 #include "test_scenes.hpp"
 
 namespace penumbra {
@@ -19,11 +19,6 @@ namespace {
 using namespace penumbra::testing;
 constexpr int kReferenceN = 1024;
 constexpr double kOcclusionTolerance = 2e-3;  // of the unoccluded value at the same point
-
-compute::Device& cpuDevice() {
-  static compute::Device device = compute::Device::select("cpu");
-  return device;
-}
 
 struct Comparison {
   double worst = 0.0;  // max |E − E_ref| / E_unoccluded

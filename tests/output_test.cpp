@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "test_files.hpp"
+
 #include "lighting/grid_evaluation.hpp"
 #include "lighting/grid_metrics.hpp"
 #include "output/result_files.hpp"
@@ -27,35 +29,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // A fresh directory per test process (ctest runs tests in parallel, one process each).
-class TempDir {
- public:
-  TempDir() {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() / (std::string("penumbra-output-test-") + info->name() + "-" +
-                                         std::to_string(::getpid()));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TempDir() { fs::remove_all(path_); }
-  const fs::path& path() const { return path_; }
-
- private:
-  fs::path path_;
-};
-
-std::string readText(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> lines(const std::string& text) {
-  std::vector<std::string> result;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) result.push_back(line);
-  return result;
-}
+using penumbra::testing::lines;
+using penumbra::testing::readText;
+using penumbra::testing::TempDir;
 
 // Splits one CSV record, honouring RFC 4180 quotes.
 std::vector<std::string> csvFields(const std::string& line) {
@@ -227,7 +203,7 @@ RunReport handMadeRun() {
 }
 
 TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   const RunReport run = handMadeRun();
   writeResults(run, dir.path() / "out");
   for (const GridReport& grid : run.grids) {
@@ -252,7 +228,7 @@ TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
 }
 
 TEST(ResultFiles, SummaryJsonReadsBack) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   const RunReport run = handMadeRun();
   writeResults(run, dir.path() / "out");
   const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
@@ -299,7 +275,7 @@ TEST(ResultFiles, GridNamesCannotEscapeTheDirectory) {
 }
 
 TEST(ResultFiles, ClashingGridFileNamesAreRefusedBeforeAnythingIsWritten) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   RunReport run = handMadeRun();
   run.grids = {handMadeGrid("a b"), handMadeGrid("a/b")};  // both a_b
   EXPECT_THROW(writeResults(run, dir.path() / "out"), std::runtime_error);
@@ -307,7 +283,7 @@ TEST(ResultFiles, ClashingGridFileNamesAreRefusedBeforeAnythingIsWritten) {
 }
 
 TEST(ResultFiles, AnExistingDirectoryKeepsTheFilesPenumbraDidNotWrite) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   const fs::path out = dir.path() / "out";
   fs::create_directories(out);
   std::ofstream(out / "notes.txt") << "mine";
@@ -324,7 +300,7 @@ TEST(ResultFiles, AnExistingDirectoryKeepsTheFilesPenumbraDidNotWrite) {
 }
 
 TEST(ResultFiles, NewDirectoriesAppearWholeAndNothingElseIsLeft) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   const fs::path out = dir.path() / "deeper" / "out/";  // trailing separator, missing parent
   writeResults(handMadeRun(), out);
   EXPECT_TRUE(fs::exists(dir.path() / "deeper" / "out" / "summary.json"));
@@ -336,7 +312,7 @@ TEST(ResultFiles, NewDirectoriesAppearWholeAndNothingElseIsLeft) {
 }
 
 TEST(StagedDirectory, AnUncommittedRunLeavesNothingBehind) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   const fs::path out = dir.path() / "new" / "out";
   {
     StagedDirectory staged(out);
@@ -346,7 +322,7 @@ TEST(StagedDirectory, AnUncommittedRunLeavesNothingBehind) {
 }
 
 TEST(StagedDirectory, AFileInTheWayIsAnError) {
-  TempDir dir;
+  TempDir dir("penumbra-output-test");
   std::ofstream(dir.path() / "out") << "not a directory";
   EXPECT_THROW(checkOutputTarget(dir.path() / "out"), std::runtime_error);
   EXPECT_THROW(writeResults(handMadeRun(), dir.path() / "out"), std::runtime_error);

@@ -8,10 +8,10 @@
 #include <map>
 #include <sstream>
 
-#include "cl/device.hpp"
 #include "lighting/grid_evaluation.hpp"
 #include "lighting/illuminance_engine.hpp"
 #include "scene/scene_loader.hpp"
+#include "test_device.hpp"
 
 namespace penumbra {
 namespace {
@@ -21,10 +21,7 @@ const std::string kValidationDir = PENUMBRA_SOURCE_DIR "/tests/validation/cie171
 // so a relative criterion per point would be undefined there).
 constexpr double kRelativeToCaseMaximum = 1e-5;
 
-compute::Device& cpuDevice() {
-  static compute::Device device = compute::Device::select("cpu");
-  return device;
-}
+using penumbra::testing::cpuDevice;
 
 struct ExactValue {
   std::string grid;

@@ -1,0 +1,12 @@
+#pragma once
+// The PoCL CPU device, opened once per test process (kernels are tested on PoCL, DESIGN.md).
+#include "cl/device.hpp"
+
+namespace penumbra::testing {
+
+inline compute::Device& cpuDevice() {
+  static compute::Device device = compute::Device::select("cpu");
+  return device;
+}
+
+}  // namespace penumbra::testing
