@@ -164,6 +164,37 @@ void clip_source(PenumbraState* st, float3 keep) {
   st->ns = count;
 }
 
+/* A solid P lies on (no face sees P; P is not its own solid) has no contour line from P: the
+ * directions into it form the cone {x : f·x < 0 for every face f through P}. Faces whose
+ * closed inside already holds all of S' do not limit that cone within S' (the floor under a
+ * cabinet: the cabinet's bottom face holds everything above the horizon, so the point is
+ * dark). One face left: S' is clipped by it, exactly. None left: P sees nothing of the source
+ * face. Two or more (P on an edge or corner that also cuts the pyramid to the source, a set of
+ * measure zero): the face most opposed to P's normal is taken. A point strictly inside (no face
+ * through P) is flagged by the host and left alone. False when nothing of S' is left. */
+bool clip_by_contact(PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                     __global const float4* planes, float eps_length) {
+  bool touches = false;
+  int limiting = -1;
+  float opposed = 2.0f;
+  for (int j = 0; j < o.planeCount; ++j) {
+    float4 pl = planes[o.firstPlane + j];
+    if (dot(pl.xyz, p) - pl.w < -eps_length) continue; /* this face does not pass through P */
+    touches = true;
+    bool holds_source = true;
+    for (int i = 0; i < st->ns && holds_source; ++i)
+      holds_source = dot(pl.xyz, st->sv[i]) <= PN_EPS_REL * length(st->sv[i]);
+    if (!holds_source && dot(pl.xyz, n) < opposed) {
+      opposed = dot(pl.xyz, n);
+      limiting = j;
+    }
+  }
+  if (!touches) return true;
+  if (limiting < 0) return false;
+  clip_source(st, planes[o.firstPlane + limiting].xyz);
+  return st->ns >= 3;
+}
+
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
  * on the contour. */
 inline bool contour_edge(int e, PnOccluder o, ulong front, float3 p, __global const int4* edges,
@@ -321,63 +352,28 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, __global con
   }
   if (st.ns < 3) return 0.0f;
 
-  /* Solids P touches (P on their surface, not its own solid) have no contour line from P: the
-   * directions into such a solid form the cone {x : f·x < 0 for every face f through P}.
-   * Faces whose closed inside already holds all of S' do not limit that cone within S' (the
-   * floor under a cabinet: the cabinet's bottom face holds everything above the horizon, so
-   * the point is dark). One face left: S' is clipped by it, exactly. None left: P sees nothing
-   * of this face. Two or more (P on an edge or corner that cuts the pyramid to the source, a
-   * set of measure zero): the face most opposed to P's normal is taken. */
+  /* One pass over the occluders: those with a face that sees P are candidates (unless their
+   * bounding sphere misses the pyramid to the face); those with none are solids P lies on. */
+  st.na = 0;
   int contacts = 0;
   for (int k = 0; k < face.occluderCount; ++k) {
     PnOccluder o = occluders[face.firstOccluder + k];
     if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
-    bool on_surface = true, touches = false;
-    int limiting = -1, limits = 0;
-    float opposed = 2.0f;
-    for (int j = 0; j < o.planeCount && on_surface; ++j) {
-      float4 pl = planes[o.firstPlane + j];
-      float d = dot(pl.xyz, p) - pl.w;
-      if (d > eps_length) on_surface = false; /* P outside this face: not on the solid */
-      if (!on_surface || d < -eps_length) continue;
-      touches = true;
-      bool holds_source = true;
-      for (int i = 0; i < st.ns && holds_source; ++i)
-        holds_source = dot(pl.xyz, st.sv[i]) <= PN_EPS_REL * length(st.sv[i]);
-      if (holds_source) continue;
-      ++limits;
-      if (dot(pl.xyz, n) < opposed) {
-        opposed = dot(pl.xyz, n);
-        limiting = j;
-      }
-    }
-    /* Not on the solid, or strictly inside it (the host flags such points). */
-    if (!on_surface || !touches) continue;
-    if (limits == 0) return 0.0f;
-    if (contacts == PN_MAX_CONTACTS) {
-      *error |= PN_ERROR_TOO_MANY_CONTACTS;
-      break;
-    }
-    ++contacts;
-    clip_source(&st, planes[o.firstPlane + limiting].xyz);
-    if (st.ns < 3) return 0.0f;
-  }
-
-  /* The occluders that can shade P from this face, with the faces of each that see P. */
-  st.na = 0;
-  for (int k = 0; k < face.occluderCount; ++k) {
-    PnOccluder o = occluders[face.firstOccluder + k];
-    if (o.solid == own || occluder_separated(p, o, planes, eps_length) ||
-        sphere_outside_pyramid(p, n, o, face, vertices))
-      continue;
     ulong front = 0;
     for (int j = 0; j < o.planeCount; ++j) {
       float4 pl = planes[o.firstPlane + j];
       if (dot(pl.xyz, p) - pl.w > eps_length) front |= 1UL << j;
     }
-    /* No face sees P: P is inside or on the occluder, whose cone from P is not a pointed
-     * cone; such a point belongs to that solid (flagged by the host), it is not shaded here. */
-    if (front == 0) continue;
+    if (front == 0) {
+      if (contacts == PN_MAX_CONTACTS) {
+        *error |= PN_ERROR_TOO_MANY_CONTACTS;
+        break;
+      }
+      ++contacts;
+      if (!clip_by_contact(&st, p, n, o, planes, eps_length)) return 0.0f;
+      continue;
+    }
+    if (sphere_outside_pyramid(p, n, o, face, vertices)) continue;
     if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
