@@ -20,8 +20,12 @@
 /* ---------------------------------------------------------------------------------------------
  * Lambert's term of one edge, scalar and in eight lanes. a, b are vectors from P. */
 
+/* cross(b, a) is computed as cross(b − a, a): for a short edge far from P, a and b are long and
+ * nearly parallel, b − a is exact in float (Sterbenz) and short, and the products are |e|·|a|
+ * instead of |a|·|b|. For a 0.6 m panel 10 m away this takes the term's relative error from
+ * about 2e-6 to 1e-7, which matters because the terms of a distant source nearly cancel. */
 inline float edge_term(float3 a, float3 b, float3 n) {
-  float3 c = cross(b, a);
+  float3 c = cross(b - a, a);
   float s = length(c);
   /* A zero-length edge, or one whose line passes through P, spans no solid angle. */
   if (!(s > 0.0f)) return 0.0f;
@@ -30,9 +34,10 @@ inline float edge_term(float3 a, float3 b, float3 n) {
 
 inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                          float8 nx, float8 ny, float8 nz) {
-  float8 cx = by * az - bz * ay;
-  float8 cy = bz * ax - bx * az;
-  float8 cz = bx * ay - by * ax;
+  float8 ex = bx - ax, ey = by - ay, ez = bz - az; /* as in edge_term: cross(b − a, a) */
+  float8 cx = ey * az - ez * ay;
+  float8 cy = ez * ax - ex * az;
+  float8 cz = ex * ay - ey * ax;
   float8 s = sqrt(cx * cx + cy * cy + cz * cz);
   float8 theta = atan2(s, ax * bx + ay * by + az * bz);
   float8 term = theta * (nx * cx + ny * cy + nz * cz) / s;
@@ -103,6 +108,28 @@ inline bool occluder_separated(float3 p, PnOccluder o, __global const float4* pl
   return false;
 }
 
+/* The shadow volumes of an occluder for this face (host/shadow/shadow_volume.hpp): inside the
+ * penumbra volume grown by eps the occluder may shade P; deeper than eps inside the umbra
+ * volume it hides the whole face. Both err on the safe side (the exact path decides). */
+inline bool in_penumbra_volume(float3 p, PnOccluder o, __global const float4* planes,
+                               float eps_length) {
+  for (int j = 0; j < o.penumbraCount; ++j) {
+    float4 pl = planes[o.firstPenumbra + j];
+    if (dot(pl.xyz, p) - pl.w > eps_length) return false;
+  }
+  return true;
+}
+
+/* The occluders a patch considers for one face: its candidate list, or (count < 0, the plain
+ * path) every occluder of the face. */
+inline int occluder_count(PnPatchFace pf, PnSourceFace face) {
+  return pf.candidateCount < 0 ? face.occluderCount : pf.candidateCount;
+}
+inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face,
+                          __global const int* candidates) {
+  return pf.candidateCount < 0 ? face.firstOccluder + i : candidates[pf.firstCandidate + i];
+}
+
 inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
                                    __global const float4* vertices) {
   float3 c = o.bound.xyz - p;
@@ -140,9 +167,13 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
 typedef struct {
   /* S' vertices, relative to P: each clip by a plane adds at most one vertex */
   float3 sv[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS];
+  float3 sm[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS]; /* unit side normals of S' */
   int ns;
-  int active[PN_MAX_ACTIVE_OCCLUDERS];
-  ulong front[PN_MAX_ACTIVE_OCCLUDERS]; /* bit f: face f of the occluder sees P */
+  /* The active occluders' contour edges, hole-oriented, relative to P, with their unit side-plane
+   * normals along cross(a, b) (zero where P is on the edge's line: no plane), extracted once per
+   * point: occluder v owns edges [first_contour[v], first_contour[v + 1]). */
+  float3 ca[PN_MAX_CONTOUR_EDGES], cb[PN_MAX_CONTOUR_EDGES], cm[PN_MAX_CONTOUR_EDGES];
+  int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
   int na;
 } PenumbraState;
 
@@ -237,33 +268,50 @@ inline bool degenerate_side(float3 m, float3 a, float3 b) {
   return length(m) <= PN_EPS_REL * length(a) * length(b);
 }
 
-/* Does the edge (a, b) lie in the plane through P with normal m? Normalised so the test reads
- * as the sine of the angle between the plane and each end's direction. */
-inline bool in_plane(float3 m, float3 a, float3 b, float f0, float f1) {
-  float lm = length(m);
-  return fabs(f0) <= PN_EPS_REL * lm * length(a) && fabs(f1) <= PN_EPS_REL * lm * length(b);
+/* The unit normal of the side plane through P and (a, b); zero when it is undefined. Side
+ * planes are normalised once per point so that the tests below need no square roots. */
+inline float3 side_normal(float3 a, float3 b) {
+  float3 m = cross(a, b);
+  return degenerate_side(m, a, b) ? (float3)(0.0f) : normalize(m);
+}
+
+inline bool no_plane(float3 m) {
+  return m.x == 0.0f && m.y == 0.0f && m.z == 0.0f;
+}
+
+/* Does the edge (a, b), of lengths la and lb, lie in the plane through P with unit normal m?
+ * The test reads as the sine of the angle between the plane and each end's direction. */
+inline bool in_plane(float f0, float f1, float la, float lb) {
+  return fabs(f0) <= PN_EPS_REL * la && fabs(f1) <= PN_EPS_REL * lb;
+}
+
+/* The point at parameter t of the edge a → b, measured from the nearer end: the ends come back
+ * exactly (a + 1·(b − a) is not b in float), so that a visible contour still closes where
+ * consecutive edges meet. An open contour leaves an error of about eps·|a| / size, which for a
+ * small, distant source is 1e-5 of its illuminance instead of 1e-7. */
+inline float3 edge_point(float3 a, float3 b, float t) {
+  return t <= 0.5f ? a + t * (b - a) : b - (1.0f - t) * (b - a);
 }
 
 /* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source). */
-float visible_edge_term(float3 a, float3 b, int owner, float3 n, float3 p, const PenumbraState* st,
-                        __global const PnOccluder* occluders, __global const int4* edges,
-                        __global const float4* overts, int* error) {
+float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraState* st,
+                        int* error) {
   float lo[PN_MAX_VISIBLE_PIECES], hi[PN_MAX_VISIBLE_PIECES];
   int pieces = 1;
   lo[0] = 0.0f;
   hi[0] = 1.0f;
   float3 me = cross(a, b);
+  const float la = length(a), lb = length(b);
 
   if (owner >= 0) { /* an occluder edge counts only inside S' */
     float t0 = 0.0f, t1 = 1.0f;
     for (int i = 0; i < st->ns; ++i) {
-      float3 sa = st->sv[i], sb = st->sv[i + 1 == st->ns ? 0 : i + 1];
-      float3 m = cross(sa, sb);
-      if (degenerate_side(m, sa, sb)) continue; /* repeated S' vertex: no side plane */
+      float3 m = st->sm[i];
+      if (no_plane(m)) continue; /* repeated S' vertex: no side plane */
       float f0 = -dot(m, a), f1 = -dot(m, b);
       /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
        * opposite → dropped. Either way this occluder edge is not counted. */
-      if (in_plane(m, a, b, f0, f1)) return 0.0f;
+      if (in_plane(f0, f1, la, lb)) return 0.0f;
       clip_interval(f0, f1, &t0, &t1);
       if (!(t1 > t0)) return 0.0f;
     }
@@ -273,16 +321,13 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, float3 p, const
 
   for (int v = 0; v < st->na; ++v) {
     if (v == owner) continue;
-    PnOccluder o = occluders[st->active[v]];
     float t0 = 0.0f, t1 = 1.0f;
     bool covers = true;
-    for (int e = 0; e < o.edgeCount && covers; ++e) {
-      float3 ca, cb;
-      if (!contour_edge(e, o, st->front[v], p, edges, overts, &ca, &cb)) continue;
-      float3 m = cross(ca, cb);                 /* inside the occluder's cone: m·x > 0 */
-      if (degenerate_side(m, ca, cb)) continue; /* P on the edge's line: no plane */
+    for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
+      float3 m = st->cm[e]; /* inside the occluder's cone: m·x > 0 */
+      if (no_plane(m)) continue; /* P on the edge's line */
       float f0 = dot(m, a), f1 = dot(m, b);
-      if (in_plane(m, a, b, f0, f1)) {
+      if (in_plane(f0, f1, la, lb)) {
         bool same_side = dot(me, m) > 0.0f;
         if (same_side && owner < v) covers = false; /* this edge is the one kept */
         continue;                                   /* otherwise the plane does not limit */
@@ -325,15 +370,15 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, float3 p, const
   }
 
   float sum = 0.0f;
-  float3 d = b - a;
-  for (int k = 0; k < pieces; ++k) sum += edge_term(a + lo[k] * d, a + hi[k] * d, n);
+  for (int k = 0; k < pieces; ++k) sum += edge_term(edge_point(a, b, lo[k]), edge_point(a, b, hi[k]), n);
   return sum;
 }
 
-float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, __global const float4* vertices,
-                    __global const PnOccluder* occluders, __global const float4* planes,
-                    __global const int4* edges, __global const float4* overts, float eps_length,
-                    int* error) {
+float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf,
+                    __global const int* candidates, int use_volumes,
+                    __global const float4* vertices, __global const PnOccluder* occluders,
+                    __global const float4* planes, __global const int4* edges,
+                    __global const float4* overts, float eps_length, int* error) {
   if (dot(face.plane.xyz, p) - face.plane.w <= 0.0f) return 0.0f;
   PenumbraState st;
 
@@ -352,13 +397,18 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, __global con
   }
   if (st.ns < 3) return 0.0f;
 
-  /* One pass over the occluders: those with a face that sees P are candidates (unless their
-   * bounding sphere misses the pyramid to the face); those with none are solids P lies on. */
+  /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
+   * P is outside their penumbra volume or their bounding sphere misses the pyramid to the
+   * face); those with none are solids P lies on. */
   st.na = 0;
+  st.first_contour[0] = 0;
   int contacts = 0;
-  for (int k = 0; k < face.occluderCount; ++k) {
-    PnOccluder o = occluders[face.firstOccluder + k];
+  const int count = occluder_count(pf, face);
+  for (int i = 0; i < count; ++i) {
+    const int k = occluder_index(i, pf, face, candidates);
+    PnOccluder o = occluders[k];
     if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
+    if (use_volumes && !in_penumbra_volume(p, o, planes, eps_length)) continue;
     ulong front = 0;
     for (int j = 0; j < o.planeCount; ++j) {
       float4 pl = planes[o.firstPlane + j];
@@ -378,28 +428,85 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, __global con
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
     }
-    st.active[st.na] = face.firstOccluder + k;
-    st.front[st.na] = front;
+    int c = st.first_contour[st.na];
+    for (int e = 0; e < o.edgeCount; ++e) {
+      float3 ea, eb;
+      if (!contour_edge(e, o, front, p, edges, overts, &ea, &eb)) continue;
+      if (c == PN_MAX_CONTOUR_EDGES) {
+        *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
+        break;
+      }
+      st.ca[c] = ea;
+      st.cb[c] = eb;
+      st.cm[c] = side_normal(ea, eb);
+      ++c;
+    }
     ++st.na;
+    st.first_contour[st.na] = c;
   }
 
+  for (int i = 0; i < st.ns; ++i) st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
   float sum = 0.0f;
   for (int i = 0; i < st.ns; ++i)
-    sum += visible_edge_term(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1], -1, n, p, &st, occluders,
-                             edges, overts, error);
-  for (int u = 0; u < st.na; ++u) {
-    PnOccluder o = occluders[st.active[u]];
-    for (int e = 0; e < o.edgeCount; ++e) {
-      float3 ca, cb;
-      if (!contour_edge(e, o, st.front[u], p, edges, overts, &ca, &cb)) continue;
-      sum += visible_edge_term(ca, cb, u, n, p, &st, occluders, edges, overts, error);
-    }
-  }
+    sum += visible_edge_term(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1], -1, n, &st, error);
+  for (int u = 0; u < st.na; ++u)
+    for (int e = st.first_contour[u]; e < st.first_contour[u + 1]; ++e)
+      sum += visible_edge_term(st.ca[e], st.cb[e], u, n, &st, error);
   return sum;
 }
 
 /* ---------------------------------------------------------------------------------------------
- * The kernel: E (lx) at PN_LANES points per work-item, summed over every source face.
+ * Shadow tests of one face for eight lanes (DESIGN.md step 3). With volumes: a lane deeper than
+ * eps inside an umbra volume gets 0; one inside a penumbra volume (grown by eps) takes the
+ * penumbra path; the rest keep the unoccluded value. Without (the plain path): a lane takes the
+ * penumbra path unless every occluder is its own solid or separated from the face. */
+
+typedef struct {
+  int8 umbra;  /* some occluder hides the whole face */
+  int8 shaded; /* some occluder may block part of it: the penumbra path */
+} ShadowTests;
+
+ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
+                          PnPatchFace pf, __global const int* candidates, int use_volumes,
+                          __global const PnOccluder* occluders, __global const float4* planes,
+                          float eps_length) {
+  ShadowTests t;
+  t.umbra = 0;
+  t.shaded = 0;
+  const int count = occluder_count(pf, face);
+  for (int i = 0; i < count; ++i) {
+    PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
+    int8 inside = own != (int8)(o.solid);
+    if (use_volumes) {
+      for (int j = 0; j < o.penumbraCount && any(inside); ++j) {
+        float4 pl = planes[o.firstPenumbra + j];
+        inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
+      }
+      if (!any(inside)) continue;
+      t.shaded |= inside;
+      if (o.umbraCount == 0) continue;
+      int8 hidden = inside;
+      for (int j = 0; j < o.umbraCount && any(hidden); ++j) {
+        float4 pl = planes[o.firstUmbra + j];
+        hidden &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
+      }
+      t.umbra |= hidden;
+    } else {
+      for (int j = 0; j < o.separatingCount; ++j) {
+        float4 pl = planes[o.firstSeparating + j];
+        inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
+      }
+      t.shaded |= inside;
+    }
+  }
+  t.shaded &= ~t.umbra;
+  return t;
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * The kernel: E (lx) at PN_LANES points per work-item, summed over every source face, and each
+ * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
+ * an occluder may block), written source by source with row length class_stride.
  * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. */
 
 __kernel void illuminance(__global const float* px_, __global const float* py_,
@@ -409,7 +516,10 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
                           const int face_count, __global const float4* vertices,
                           __global const PnOccluder* occluders, __global const float4* planes,
                           __global const int4* edges, __global const float4* overts,
-                          const float eps_length, __global float* out, __global int* errors) {
+                          const float eps_length, __global const PnPatchFace* patch_faces,
+                          __global const int* candidates, const int use_volumes,
+                          __global float* out, __global int* errors, __global uchar* classes,
+                          const int class_stride) {
   const size_t g = get_global_id(0);
   float8 px = vload8(g, px_), py = vload8(g, py_), pz = vload8(g, pz_);
   float8 nx = vload8(g, nx_), ny = vload8(g, ny_), nz = vload8(g, nz_);
@@ -426,37 +536,42 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
   vstore8(own, 0, lane_own);
 
   float8 e_total = 0.0f;
+  int8 reaches = 0, blocked = 0; /* per source, reset after its last face */
   int error = 0;
   for (int f = 0; f < face_count; ++f) {
     PnSourceFace face = faces[f];
-    float8 e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
-
-    /* Which lanes might be shaded: any occluder neither the point's own solid nor separated. */
-    int8 shaded = 0;
-    for (int k = 0; k < face.occluderCount; ++k) {
-      PnOccluder o = occluders[face.firstOccluder + k];
-      int8 culled = own == (int8)(o.solid);
-      for (int j = 0; j < o.separatingCount; ++j) {
-        float4 pl = planes[o.firstSeparating + j];
-        culled |= (pl.x * px + pl.y * py + pl.z * pz - pl.w) >= -eps_length;
+    PnPatchFace pf = patch_faces[g * face_count + f];
+    if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
+      float8 e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      int8 facing = e_face > 0.0f;
+      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes,
+                                    occluders, planes, eps_length);
+      e_face = select(e_face, (float8)(0.0f), t.umbra);
+      if (any(t.shaded)) {
+        float lane_e[PN_LANES];
+        int lane_shaded[PN_LANES];
+        vstore8(e_face, 0, lane_e);
+        vstore8(t.shaded, 0, lane_shaded);
+        for (int l = 0; l < PN_LANES; ++l) {
+          if (!lane_shaded[l]) continue;
+          float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
+          float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
+          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes,
+                                    vertices, occluders, planes, edges, overts, eps_length,
+                                    &error);
+        }
+        e_face = vload8(0, lane_e);
       }
-      shaded |= ~culled;
+      e_total += face.halfLuminance * e_face;
+      reaches |= facing & ~t.umbra;
+      blocked |= facing & (t.shaded | t.umbra);
     }
-    if (any(shaded)) {
-      float lane_e[PN_LANES];
-      int lane_shaded[PN_LANES];
-      vstore8(e_face, 0, lane_e);
-      vstore8(shaded, 0, lane_shaded);
-      for (int l = 0; l < PN_LANES; ++l) {
-        if (!lane_shaded[l]) continue;
-        float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
-        float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
-        lane_e[l] = penumbra_face(p, n, lane_own[l], face, vertices, occluders, planes, edges,
-                                  overts, eps_length, &error);
-      }
-      e_face = vload8(0, lane_e);
+    if (f + 1 == face_count || faces[f + 1].source != face.source) {
+      int8 cls = (reaches & 1) | ((blocked & 1) << 1);
+      vstore8(convert_uchar8(cls), 0, classes + (size_t)face.source * class_stride + g * PN_LANES);
+      reaches = 0;
+      blocked = 0;
     }
-    e_total += face.halfLuminance * e_face;
   }
   vstore8(e_total, g, out);
   errors[g] = error;

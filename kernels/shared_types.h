@@ -21,6 +21,7 @@ typedef cl_int4 pn_int4;
 #define PN_MAX_ACTIVE_OCCLUDERS 64 /* occluders that can shade one point from one face */
 #define PN_MAX_VISIBLE_PIECES 32   /* visible parameter intervals on one edge */
 #define PN_MAX_CONTACTS 8          /* solids whose surface one point touches (besides its own) */
+#define PN_MAX_CONTOUR_EDGES 256   /* contour edges of all occluders active at one point */
 #define PN_LANES 8                 /* points per work-item, one per float8 lane */
 
 /* Error bits the kernel reports per point (host turns them into an exception). */
@@ -43,15 +44,31 @@ typedef struct {
  * (from, to, left face, right face), local to this occluder: `left` is the face whose
  * counter-clockwise loop runs from -> to. The separating planes are the faces whose closed
  * outside holds the whole source face: a point in the closed outside of one of them cannot be
- * shaded by this occluder. */
+ * shaded by this occluder. The penumbra and umbra planes bound its shadow volumes for this
+ * face (host/shadow/shadow_volume.hpp): closed insides, umbraCount 0 when none is claimed. */
 typedef struct {
   pn_float4 bound; /* bounding sphere: xyz centre, w radius */
   pn_int firstPlane, planeCount;
   pn_int firstEdge, edgeCount;
   pn_int firstVertex, vertexCount;
   pn_int firstSeparating, separatingCount;
+  pn_int firstPenumbra, penumbraCount;
+  pn_int firstUmbra, umbraCount;
   pn_int solid; /* scene solid it was clipped from */
   pn_int pad0, pad1, pad2;
 } PnOccluder;
+
+/* Per work-item (a patch of PN_LANES points) and source face: where its candidate occluders
+ * are in the candidate list, and the patch's face class. count < 0: every occluder of the face
+ * (the plain path, --no-culling). */
+typedef struct {
+  pn_int firstCandidate, candidateCount;
+  pn_int faceClass; /* PN_CLASS_* */
+  pn_int pad0;
+} PnPatchFace;
+
+#define PN_CLASS_A 0 /* every point of the patch sees the whole face above its horizon */
+#define PN_CLASS_B 1 /* some point's horizon may cut the face */
+#define PN_CLASS_C 2 /* no point of the patch receives anything from the face */
 
 #endif

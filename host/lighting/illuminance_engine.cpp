@@ -6,6 +6,8 @@
 
 #include "cl/buffer.hpp"
 #include "lighting/kernel_scene.hpp"
+#include "lighting/patch_table.hpp"
+#include "shadow/scene_shadows.hpp"
 
 namespace penumbra {
 
@@ -13,15 +15,24 @@ using compute::DeviceBuffer;
 
 struct IlluminanceEngine::State {
   compute::Device* device = nullptr;
+  EngineOptions options;
+  SceneShadows shadows;
   KernelScene packed;
   compute::Program program;
   DeviceBuffer faces, sourceVertices, occluders, planes, edges, occluderVertices;
 
-  State(compute::Device& d, const Scene& scene)
+  State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d),
-        packed(packScene(scene)),
+        options(o),
         program(d, "illuminance",
                 fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f", Tolerance::kKernelRelative)) {
+    upload(scene);
+  }
+
+  void upload(const Scene& scene) {
+    compute::Device& d = *device;
+    shadows = buildSceneShadows(scene);
+    packed = packScene(scene, shadows);
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
     sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
@@ -31,74 +42,114 @@ struct IlluminanceEngine::State {
   }
 };
 
-IlluminanceEngine::IlluminanceEngine(compute::Device& device, const Scene& scene)
-    : state_(std::make_unique<State>(device, scene)) {}
+IlluminanceEngine::IlluminanceEngine(compute::Device& device, const Scene& scene,
+                                     EngineOptions options)
+    : state_(std::make_unique<State>(device, scene, options)) {}
 IlluminanceEngine::~IlluminanceEngine() = default;
 
+void IlluminanceEngine::setScene(const Scene& scene) {
+  state_->upload(scene);
+}
+
 std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> points) {
+  return evaluate(points).illuminance;
+}
+
+namespace {
+
+std::string kernelError(int bits, const SamplePoint& p) {
+  return fmt::format(
+      "the illuminance kernel ran out of room near point ({:.3f}, {:.3f}, {:.3f}) m: {}",
+      p.position.x(), p.position.y(), p.position.z(),
+      (bits & PN_ERROR_TOO_MANY_OCCLUDERS)
+          ? fmt::format("more than {} occluders shade it", PN_MAX_ACTIVE_OCCLUDERS)
+      : (bits & PN_ERROR_TOO_MANY_CONTACTS)
+          ? fmt::format("it touches more than {} solids", PN_MAX_CONTACTS)
+          : fmt::format("more than {} visible pieces on one edge", PN_MAX_VISIBLE_PIECES));
+}
+
+}  // namespace
+
+IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points) {
+  IlluminanceResult result;
+  result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
-  if (n == 0) return {};
+  if (n == 0) return result;
   // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
   // KernelLaunch::run for why the work-group size is fixed).
   constexpr std::size_t kWorkGroup = 16;
-  const std::size_t groups = (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
-  const std::size_t padded = groups * PN_LANES;
+  const std::size_t workItems =
+      (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
+  const std::size_t padded = workItems * PN_LANES;
   // Structure of arrays, one float8 lane per point. Padding repeats the last point.
   std::vector<float> coords[6];
   for (auto& c : coords) c.resize(padded);
   std::vector<cl_int> own(padded);
-  for (std::size_t i = 0; i < n; ++i) {
-    const SamplePoint& p = points[i];
+  for (std::size_t i = 0; i < padded; ++i) {
+    const SamplePoint& p = points[std::min(i, n - 1)];
     for (int k = 0; k < 3; ++k) {
       coords[k][i] = static_cast<float>(p.position[k]);
       coords[3 + k][i] = static_cast<float>(p.normal[k]);
     }
     own[i] = p.solid;
   }
-  for (std::size_t i = n; i < padded; ++i) {
-    for (auto& c : coords) c[i] = c[n - 1];
-    own[i] = own[n - 1];
-  }
+  // The volumes are grown by twice the kernel's tolerance: the kernel tests points against them
+  // within its tolerance, in float.
+  const PatchTable table = buildPatchTable(state_->shadows, state_->packed, points, workItems,
+                                           state_->options.culling, 2.0 * state_->packed.epsLength);
+
   compute::Device& d = *state_->device;
   DeviceBuffer pointBuffers[6];
   for (int k = 0; k < 6; ++k) pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
+  DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
+  DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
   DeviceBuffer out = DeviceBuffer::allocate(d, padded * sizeof(float));
-  DeviceBuffer errors = DeviceBuffer::allocate(d, groups * sizeof(cl_int));
+  DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
+  const std::size_t classBytes = padded * std::max(result.sourceCount, 1);
+  DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
 
   compute::KernelLaunch launch(state_->program, "illuminance");
   // Argument order: kernels/illuminance.cl, kernel `illuminance`.
-  for (unsigned k = 0; k < 6; ++k) launch.arg(k, pointBuffers[k]);
-  launch.arg(6, ownBuffer);
-  launch.arg(7, state_->faces);
-  launch.arg(8, static_cast<int>(state_->packed.faces.size()));
-  launch.arg(9, state_->sourceVertices);
-  launch.arg(10, state_->occluders);
-  launch.arg(11, state_->planes);
-  launch.arg(12, state_->edges);
-  launch.arg(13, state_->occluderVertices);
-  launch.arg(14, state_->packed.epsLength);
-  launch.arg(15, out);
-  launch.arg(16, errors);
-  launch.run(groups, kWorkGroup);
+  unsigned a = 0;
+  for (int k = 0; k < 6; ++k) launch.arg(a++, pointBuffers[k]);
+  launch.arg(a++, ownBuffer);
+  launch.arg(a++, state_->faces);
+  launch.arg(a++, static_cast<int>(state_->packed.faces.size()));
+  launch.arg(a++, state_->sourceVertices);
+  launch.arg(a++, state_->occluders);
+  launch.arg(a++, state_->planes);
+  launch.arg(a++, state_->edges);
+  launch.arg(a++, state_->occluderVertices);
+  launch.arg(a++, state_->packed.epsLength);
+  launch.arg(a++, patchBuffer);
+  launch.arg(a++, candidateBuffer);
+  launch.arg(a++, state_->options.culling ? 1 : 0);
+  launch.arg(a++, out);
+  launch.arg(a++, errors);
+  launch.arg(a++, classes);
+  launch.arg(a++, static_cast<int>(padded));
+  launch.run(workItems, kWorkGroup);
 
   std::vector<float> e(padded);
   out.download(e.data(), padded * sizeof(float));
-  std::vector<cl_int> errorBits(groups);
-  errors.download(errorBits.data(), groups * sizeof(cl_int));
-  for (std::size_t g = 0; g < groups; ++g) {
-    if (errorBits[g] == 0) continue;
-    const SamplePoint& p = points[g * PN_LANES];
-    throw std::runtime_error(fmt::format(
-        "the illuminance kernel ran out of room near point ({:.3f}, {:.3f}, {:.3f}) m: {}",
-        p.position.x(), p.position.y(), p.position.z(),
-        (errorBits[g] & PN_ERROR_TOO_MANY_OCCLUDERS)
-            ? fmt::format("more than {} occluders shade it", PN_MAX_ACTIVE_OCCLUDERS)
-        : (errorBits[g] & PN_ERROR_TOO_MANY_CONTACTS)
-            ? fmt::format("it touches more than {} solids", PN_MAX_CONTACTS)
-            : fmt::format("more than {} visible pieces on one edge", PN_MAX_VISIBLE_PIECES)));
-  }
-  return std::vector<double>(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  std::vector<cl_int> errorBits(workItems);
+  errors.download(errorBits.data(), workItems * sizeof(cl_int));
+  for (std::size_t w = 0; w < workItems; ++w)
+    if (errorBits[w] != 0)
+      throw std::runtime_error(kernelError(errorBits[w], points[std::min(w * PN_LANES, n - 1)]));
+  result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+
+  // The kernel writes classes source by source ([source][padded point]); callers read them point
+  // by point.
+  std::vector<std::uint8_t> bySource(classBytes);
+  classes.download(bySource.data(), classBytes);
+  result.shadowClass.resize(n * result.sourceCount);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int s = 0; s < result.sourceCount; ++s)
+      result.shadowClass[i * result.sourceCount + s] =
+          static_cast<ShadowClass>(bySource[s * padded + i]);
+  return result;
 }
 
 }  // namespace penumbra

@@ -1,5 +1,6 @@
 #pragma once
 // Exact direct illuminance at sample points, computed by kernels/illuminance.cl.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -7,18 +8,42 @@
 #include "cl/device.hpp"
 #include "lighting/sample_point.hpp"
 #include "scene/scene.hpp"
+#include "shadow/shadow_class.hpp"
 
 namespace penumbra {
 
+struct EngineOptions {
+  // Shadow volumes and face classes (issue 3): each sample tests only the occluders whose
+  // penumbra volume meets its patch, umbra samples get 0 at once, lit ones the plain contour
+  // integral. Off: every sample considers every occluder (the foundation's path), for comparison.
+  bool culling = true;
+};
+
+struct IlluminanceResult {
+  std::vector<double> illuminance;       // lx, per point, summed over all sources
+  std::vector<ShadowClass> shadowClass;  // [point * sourceCount + source]
+  int sourceCount = 0;
+  ShadowClass shadow(std::size_t point, int source) const {
+    return shadowClass[point * static_cast<std::size_t>(sourceCount) + source];
+  }
+};
+
 class IlluminanceEngine {
  public:
-  // Builds the program and uploads the scene (sources, occluders clipped to each source's
-  // front half-space) once; illuminance() may then be called many times.
-  IlluminanceEngine(compute::Device& device, const Scene& scene);
+  // Builds the program, the shadow geometry (host/shadow) and uploads the scene once;
+  // illuminance() may then be called many times.
+  IlluminanceEngine(compute::Device& device, const Scene& scene, EngineOptions options = {});
   ~IlluminanceEngine();
+
+  // Replaces the scene and keeps the compiled program and the device: what a sweep does between
+  // cases. Afterwards illuminance() answers for `scene` only.
+  void setScene(const Scene& scene);
 
   // E in lx at every point, summed over all sources.
   std::vector<double> illuminance(std::span<const SamplePoint> points);
+  // E and each point's shadow class per source. With culling off the classes come from the
+  // plain path's tests: Lit or Penumbra ("some occluder may block"), never Umbra.
+  IlluminanceResult evaluate(std::span<const SamplePoint> points);
 
  private:
   struct State;

@@ -7,7 +7,8 @@
 #include "geometry/nishita.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
-static_assert(sizeof(PnOccluder) == 64, "PnOccluder layout must match kernels/shared_types.h");
+static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
+static_assert(sizeof(PnPatchFace) == 16, "PnPatchFace layout must match kernels/shared_types.h");
 
 namespace penumbra {
 
@@ -26,13 +27,19 @@ cl_float4 toFloat4(const Plane& plane) {
   return toFloat4(plane.normal, plane.offset);
 }
 
-void appendOccluder(KernelScene& packed, const ConvexPolyhedron& shape, int solid,
-                    const ConvexPolygon& face, const Tolerance& tolerance) {
+int appendPlanes(KernelScene& packed, const std::vector<Plane>& planes) {
+  for (const Plane& p : planes) packed.planes.push_back(toFloat4(p));
+  return static_cast<int>(planes.size());
+}
+
+void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const ConvexPolygon& face,
+                    const Tolerance& tolerance) {
+  const ConvexPolyhedron& shape = caster.shape;
   if (shape.faces().size() > PN_MAX_OCCLUDER_FACES)
     throw std::runtime_error(fmt::format("a solid has {} faces; the kernel handles at most {}",
                                          shape.faces().size(), PN_MAX_OCCLUDER_FACES));
   PnOccluder o{};
-  o.solid = solid;
+  o.solid = caster.solid;
   o.firstPlane = static_cast<int>(packed.planes.size());
   o.planeCount = static_cast<int>(shape.faces().size());
   for (const auto& f : shape.faces()) packed.planes.push_back(toFloat4(f.plane));
@@ -41,6 +48,10 @@ void appendOccluder(KernelScene& packed, const ConvexPolyhedron& shape, int soli
     if (nishitaH(f.plane, face, tolerance.length) == Side::Positive)
       packed.planes.push_back(toFloat4(f.plane));
   o.separatingCount = static_cast<int>(packed.planes.size()) - o.firstSeparating;
+  o.firstPenumbra = static_cast<int>(packed.planes.size());
+  o.penumbraCount = appendPlanes(packed, caster.volume.penumbra);
+  o.firstUmbra = static_cast<int>(packed.planes.size());
+  o.umbraCount = appendPlanes(packed, caster.volume.umbra);
   o.firstEdge = static_cast<int>(packed.edges.size());
   o.edgeCount = static_cast<int>(shape.edges().size());
   for (const auto& e : shape.edges())
@@ -61,36 +72,29 @@ void appendOccluder(KernelScene& packed, const ConvexPolyhedron& shape, int soli
 
 }  // namespace
 
-KernelScene packScene(const Scene& scene) {
+KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
   KernelScene packed;
-  const Tolerance tolerance = Tolerance::forSceneSize(scene.size());
   packed.epsLength = static_cast<float>(Tolerance::kKernelRelative * std::max(scene.size(), 1.0));
-  for (std::size_t s = 0; s < scene.sources.size(); ++s) {
-    const Source& source = scene.sources[s];
-    for (const ConvexPolygon& face : source.faces) {
-      if (face.size() > PN_MAX_SOURCE_VERTICES)
-        throw std::runtime_error(
-            fmt::format("source '{}' has a face with {} vertices; the kernel "
-                        "handles at most {}",
-                        source.name, face.size(), PN_MAX_SOURCE_VERTICES));
-      PnSourceFace f{};
-      const Plane plane = face.plane();
-      f.plane = toFloat4(plane);
-      f.firstVertex = static_cast<int>(packed.sourceVertices.size());
-      f.vertexCount = face.size();
-      for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(toFloat4(v));
-      f.halfLuminance = static_cast<float>(0.5 * source.luminance);
-      f.source = static_cast<int>(s);
-      f.firstOccluder = static_cast<int>(packed.occluders.size());
-      // The front half-space of the face is the inside of its flipped plane.
-      const Plane back = plane.flipped();
-      for (std::size_t i = 0; i < scene.solids.size(); ++i) {
-        const ConvexPolyhedron clipped = scene.solids[i].shape.clipped(back, tolerance.length);
-        if (!clipped.empty()) appendOccluder(packed, clipped, static_cast<int>(i), face, tolerance);
-      }
-      f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
-      packed.faces.push_back(f);
-    }
+  packed.sourceCount = static_cast<int>(scene.sources.size());
+  for (const EmittingFaceShadows& emitting : shadows.faces) {
+    const Source& source = scene.sources[emitting.source];
+    const ConvexPolygon& face = emitting.face;
+    if (face.size() > PN_MAX_SOURCE_VERTICES)
+      throw std::runtime_error(
+          fmt::format("source '{}' has a face with {} vertices; the kernel handles at most {}",
+                      source.name, face.size(), PN_MAX_SOURCE_VERTICES));
+    PnSourceFace f{};
+    f.plane = toFloat4(face.plane());
+    f.firstVertex = static_cast<int>(packed.sourceVertices.size());
+    f.vertexCount = face.size();
+    for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(toFloat4(v));
+    f.halfLuminance = static_cast<float>(0.5 * source.luminance);
+    f.source = emitting.source;
+    f.firstOccluder = static_cast<int>(packed.occluders.size());
+    for (const ShadowCaster& caster : emitting.casters)
+      appendOccluder(packed, caster, face, shadows.tolerance);
+    f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
+    packed.faces.push_back(f);
   }
   return packed;
 }

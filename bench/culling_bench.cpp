@@ -1,0 +1,141 @@
+// Shadow-volume culling on the open office (issue 3): work-plane throughput with culling (face
+// classes, candidate occluders per patch, umbra/penumbra volumes) and without (every sample
+// considers every occluder: the foundation's path), and how the cost per point grows with the
+// number of solids. Prints one JSON line per scene size.
+//   usage: culling_bench [--device cpu|gpu|<index>] [--repeat R] [--solids 25,50,100,200,400]
+//                        [--write-scene PATH [--solids N]]
+#include <fmt/format.h>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "bench/open_office.hpp"
+#include "cl/device.hpp"
+#include "lighting/grid_evaluation.hpp"
+#include "lighting/illuminance_engine.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace {
+
+using namespace penumbra;
+
+double seconds(auto&& f) {
+  const auto start = std::chrono::steady_clock::now();
+  f();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+struct Timing {
+  double setup = 0.0;  // engine construction: program, shadow volumes, upload
+  double best = 1e30;  // one evaluation of the whole work plane (patch table + kernel)
+  std::vector<double> e;
+  std::vector<ShadowClass> classes;
+};
+
+Timing timeEngine(compute::Device& device, const Scene& scene,
+                  const std::vector<SamplePoint>& points, bool culling, int repeat) {
+  Timing t;
+  std::unique_ptr<IlluminanceEngine> engine;
+  t.setup = seconds(
+      [&] { engine = std::make_unique<IlluminanceEngine>(device, scene, EngineOptions{culling}); });
+  engine->illuminance(std::span(points).first(64));  // warm-up: first launch, caches
+  for (int r = 0; r < repeat; ++r) {
+    IlluminanceResult result;
+    t.best = std::min(t.best, seconds([&] { result = engine->evaluate(points); }));
+    t.e = std::move(result.illuminance);
+    t.classes = std::move(result.shadowClass);
+  }
+  return t;
+}
+
+void run(compute::Device& device, int solids, int repeat) {
+  const Scene scene = parseScene(bench::openOfficeYaml(solids), "open-office.yaml");
+  const GridSamples samples = gridSamples(scene, scene.grids.at(0));
+  std::vector<SamplePoint> points;
+  for (std::size_t i = 0; i < samples.points.size(); ++i)
+    if (samples.inside[i] < 0) points.push_back(samples.points[i]);
+
+  // For profilers (callgrind counts instructions whatever the machine's load): one mode only.
+  const char* only = std::getenv("PENUMBRA_BENCH_ONLY");
+  if (only) {
+    timeEngine(device, scene, points, std::string(only) == "culled", repeat);
+    return;
+  }
+  const Timing culled = timeEngine(device, scene, points, true, repeat);
+  const Timing plain = timeEngine(device, scene, points, false, repeat);
+
+  double worst = 0.0, emax = 0.0;
+  for (double e : plain.e) emax = std::max(emax, e);
+  std::size_t worstAt = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const double d = std::abs(culled.e[i] - plain.e[i]) / std::max(plain.e[i], 1e-6 * emax);
+    if (d > worst) {
+      worst = d;
+      worstAt = i;
+    }
+  }
+  if (std::getenv("PENUMBRA_BENCH_VERBOSE")) {
+    const SamplePoint& p = points[worstAt];
+    std::cerr << fmt::format(
+        "worst point ({:.6f}, {:.6f}, {:.6f}): culled {:.9g} lx, plain {:.9g} lx\n", p.position.x(),
+        p.position.y(), p.position.z(), culled.e[worstAt], plain.e[worstAt]);
+    for (int s = 0; s < static_cast<int>(scene.sources.size()); ++s)
+      std::cerr << static_cast<int>(culled.classes[worstAt * scene.sources.size() + s]) << ' ';
+    std::cerr << '\n';
+  }
+  std::size_t counts[4] = {0, 0, 0, 0};
+  for (ShadowClass c : culled.classes) ++counts[static_cast<int>(c)];
+  const double pointSources = static_cast<double>(points.size()) * scene.sources.size();
+
+  nlohmann::json line = {
+      {"solids", scene.solids.size()},
+      {"device", device.info().name},
+      {"points", points.size()},
+      {"sources", scene.sources.size()},
+      {"culled_setup_s", culled.setup},
+      {"culled_s", culled.best},
+      {"plain_s", plain.best},
+      {"speedup", plain.best / culled.best},
+      {"culled_us_per_point", 1e6 * culled.best / points.size()},
+      {"plain_us_per_point", 1e6 * plain.best / points.size()},
+      {"culled_point_sources_per_s", pointSources / culled.best},
+      {"classes_lit_penumbra_umbra_unlit",
+       {counts[static_cast<int>(ShadowClass::Lit)], counts[static_cast<int>(ShadowClass::Penumbra)],
+        counts[static_cast<int>(ShadowClass::Umbra)],
+        counts[static_cast<int>(ShadowClass::Unlit)]}},
+      {"max_relative_difference", worst},
+  };
+  std::cout << line.dump() << std::endl;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::string deviceSpec = "cpu", solidsList = "25,50,100,200,400", writeScene;
+  int repeat = 3;
+  for (int i = 1; i + 1 < argc; i += 2) {
+    if (!std::strcmp(argv[i], "--device"))
+      deviceSpec = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--repeat"))
+      repeat = std::atoi(argv[i + 1]);
+    else if (!std::strcmp(argv[i], "--solids"))
+      solidsList = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--write-scene"))
+      writeScene = argv[i + 1];
+  }
+  if (!writeScene.empty()) {
+    std::ofstream(writeScene) << bench::openOfficeYaml(std::stoi(solidsList));
+    return 0;
+  }
+  compute::Device device = compute::Device::select(deviceSpec);
+  std::stringstream list(solidsList);
+  for (std::string item; std::getline(list, item, ',');) run(device, std::stoi(item), repeat);
+  return 0;
+}

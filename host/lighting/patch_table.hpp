@@ -1,0 +1,28 @@
+#pragma once
+// Per work-item of the illuminance kernel (a patch of PN_LANES consecutive points) and per
+// source face: the patch's face class and its candidate occluders (Nishita §2.2 steps iii and
+// v, on patches of samples rather than whole faces). Built on the host for every batch of points.
+#include <span>
+#include <vector>
+
+#include "kernels/shared_types.h"
+#include "lighting/kernel_scene.hpp"
+#include "lighting/sample_point.hpp"
+#include "shadow/scene_shadows.hpp"
+
+namespace penumbra {
+
+struct PatchTable {
+  std::vector<PnPatchFace> entries;  // [workItem * faceCount + face]
+  std::vector<cl_int> candidates;    // indices into KernelScene::occluders
+};
+
+// `points` padded as the kernel sees them: work-item w holds points [w·PN_LANES, (w+1)·PN_LANES)
+// and the padding repeats the last point. `margin` (m) grows every volume, to cover the
+// kernel's own tolerance and float rounding. With culling off every entry lists all occluders
+// of its face with class B: the plain path.
+PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packed,
+                           std::span<const SamplePoint> points, std::size_t workItems, bool culling,
+                           double margin);
+
+}  // namespace penumbra

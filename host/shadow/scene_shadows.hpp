@@ -1,0 +1,39 @@
+#pragma once
+// The shadow geometry of a scene, built once on the host (DESIGN.md step 2-3): for every emitting
+// face, every solid clipped to that face's front half-space (Nishita: "the portion of the
+// positive-space of S_e"; a ceiling slab around a flush panel becomes empty or thin) with its
+// umbra and penumbra volumes. Solids left with no volume cast nothing and are dropped.
+// A polyhedron source is handled face by face (the kernel integrates it so; docs/method.md).
+#include <vector>
+
+#include "geometry/bounding_box.hpp"
+#include "geometry/tolerance.hpp"
+#include "scene/scene.hpp"
+#include "shadow/shadow_volume.hpp"
+
+namespace penumbra {
+
+struct ShadowCaster {
+  int solid = -1;          // index into Scene::solids
+  ConvexPolyhedron shape;  // the solid clipped to the face's front half-space
+  ShadowVolume volume;
+  BoundingBox reach;  // the part of the penumbra volume within SceneShadows::bounds
+};
+
+struct EmittingFaceShadows {
+  int source = -1;  // index into Scene::sources
+  ConvexPolygon face;
+  std::vector<ShadowCaster> casters;
+};
+
+struct SceneShadows {
+  Tolerance tolerance;
+  // The scene's solids and sources, grown by the scene's size on every side: casters' reach is
+  // measured within it (penumbra volumes are unbounded), so it only speaks for points inside.
+  BoundingBox bounds;
+  std::vector<EmittingFaceShadows> faces;  // every face of every source, in scene order
+};
+
+SceneShadows buildSceneShadows(const Scene& scene);
+
+}  // namespace penumbra
