@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "penumbra_process.hpp"
 #include "test_files.hpp"
 
 namespace {
@@ -20,26 +21,9 @@ namespace fs = std::filesystem;
 
 using penumbra::testing::lines;
 using penumbra::testing::readText;
+using penumbra::testing::Result;
+using penumbra::testing::runPenumbra;
 using penumbra::testing::TempDir;
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-// Runs penumbra with `arguments` (already shell-quoted) in `dir`.
-Result runPenumbra(const fs::path& dir, const std::string& arguments) {
-  const std::string command = "cd '" + dir.string() + "' && '" PENUMBRA_BINARY "' " + arguments +
-                              " > stdout.txt 2> stderr.txt < /dev/null";
-  const int raw = std::system(command.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = readText(dir / "stdout.txt");
-  r.err = readText(dir / "stderr.txt");
-  fs::remove(dir / "stdout.txt");
-  fs::remove(dir / "stderr.txt");
-  return r;
-}
 
 // A 4 × 4 × 3 m room, a 1 m² ceiling panel and a small table beside the point under it that
 // shades part of the floor. The probe at (1.5, 1.5, 0.5) is inside the table. No floor point
@@ -162,6 +146,27 @@ TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
     // table's penumbra; tests/reference_test.cpp and the kernel tests hold both to tighter bounds.
     EXPECT_NEAR(a[i].e, b[i].e, 1e-2 * b[i].e) << a[i].x << " " << a[i].y;
   }
+}
+
+// --no-culling runs the plain path (every occluder at every point): the same numbers, and the
+// summary says which path ran.
+TEST(Cli, NoCullingGivesTheSameIlluminance) {
+  TempDir dir("penumbra-cli-test");
+  writeScene(dir.path() / "scene.yaml");
+  const Result culled = runPenumbra(dir.path(), "grid scene.yaml -o culled --device cpu -q");
+  if (culled.status != 0 && culled.err.find("no OpenCL device") != std::string::npos) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << culled.err;
+  }
+  ASSERT_EQ(culled.status, 0) << culled.err;
+  const Result plain =
+      runPenumbra(dir.path(), "grid scene.yaml -o plain --device cpu -q --no-culling");
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  const auto a = readCsv(dir.path() / "culled" / "floor.csv");
+  const auto b = readCsv(dir.path() / "plain" / "floor.csv");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i].e, b[i].e, 1e-6 * b[i].e) << i;
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "plain" / "summary.json"));
+  EXPECT_NE(summary.dump().find("no culling"), std::string::npos) << summary.dump();
 }
 
 TEST(Cli, OnlyTheGridsAskedFor) {

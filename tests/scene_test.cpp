@@ -514,7 +514,8 @@ TEST(Errors, UnknownKeyAtTheTop) {
   expectError(R"(penumbra: 1
 lights: []
 )",
-              2, "lights", "a scene accepts: penumbra, materials, room, solids, sources, grids");
+              2, "lights",
+              "a scene accepts: penumbra, parameters, materials, room, solids, sources, grids");
 }
 
 TEST(Errors, UnknownKeyInASource) {

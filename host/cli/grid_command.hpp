@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/parameters.hpp"
+
 namespace penumbra {
 
 struct GridOptions {
@@ -13,7 +15,9 @@ struct GridOptions {
   std::string device = "auto";     // "auto", "cpu", "gpu" or an index from `penumbra devices`
   bool reference = false;          // the host reference instead of the OpenCL kernel
   int referenceN = 64;             // ~n² sub-elements per source face
+  bool culling = true;             // shadow-volume culling; --no-culling runs the plain path
   std::vector<std::string> grids;  // only these grids; all when empty
+  ParameterValues parameters;      // --set: replace these defaults of the scene's parameters
   bool quiet = false;
 };
 

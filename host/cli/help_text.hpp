@@ -13,6 +13,9 @@ inline constexpr const char* kProgram =
 inline constexpr const char* kProgramFooter =
     "Examples:\n"
     "  penumbra grid data/office.yaml -o out/office    illuminance on every grid of the scene\n"
+    "  penumbra sweep studies/window-width.yaml -o out/window-width\n"
+    "                                                  every case of a parameter study, one table\n"
+    "  penumbra plot out/office                        heat maps, isolux lines, room surfaces\n"
     "  penumbra devices                                the OpenCL devices --device can name\n"
     "  penumbra grid --help                            the outputs and their units";
 
@@ -26,9 +29,12 @@ inline constexpr const char* kGridFooter =
     "                position (m), unit normal of the receiving surface, illuminance (lx), and\n"
     "                the name of the solid the point lies inside (empty when none)\n"
     "  <grid>.res    E in lx, one value a line, in point order (the order of Radiance's rtrace)\n"
-    "  summary.json  scene, device, timing (s) and per grid: points, points_inside_solids,\n"
-    "                spacing_m, Eavg_lx, Emin_lx, Emax_lx, U0 = Emin/Eavg, Ud = Emin/Emax, time_s\n"
-    "A table of the same metrics is printed at the end.\n"
+    "  summary.json  scene, its parameters' values, device, timing (s) and per grid: points,\n"
+    "                points_inside_solids, spacing_m, Eavg_lx, Emin_lx, Emax_lx,\n"
+    "                U0 = Emin/Eavg, Ud = Emin/Emax, time_s\n"
+    "                (and kind, columns, rows and scene_absolute, which `penumbra plot` reads)\n"
+    "A table of the same metrics is printed at the end. With --plot, the pictures and VTK\n"
+    "files of `penumbra plot` follow (see `penumbra plot --help`).\n"
     "\n"
     "Points inside a solid get E = 0 and are left out of Eavg, Emin, Emax, U0 and Ud.\n"
     "The files appear together when the run has succeeded, never half-written. If the\n"
@@ -42,9 +48,58 @@ inline constexpr const char* kGridFooter =
     "Examples:\n"
     "  penumbra grid data/office.yaml -o out/office\n"
     "  penumbra grid data/office.yaml -o out/desk --grid desk-1-top --reference\n"
+    "  penumbra grid data/office.yaml -o out/narrow --set window_width_m=1.2\n"
+    "  penumbra grid data/office.yaml -o out/office --plot --range 0:1500\n"
     "\n"
     "Exit status: 0 done; 1 error (device, output directory, options); 2 invalid scene, reported\n"
     "as file:line: key: message. Nothing is written unless the run succeeds.";
+
+inline constexpr const char* kSweep =
+    "Run a parameter study: every case (one set of values of the base scene's parameters) is "
+    "computed like `penumbra grid` on one device with one compiled program, into its own folder, "
+    "and all of them are compared in one table.";
+
+inline constexpr const char* kSweepFooter =
+    "The study file (docs/sweeps.md) names a base scene whose numeric fields use its parameters\n"
+    "(\"${3.0 - window_width_m/2}\"), the values each parameter takes (values, range, linspace)\n"
+    "and how they combine (grid: every combination; zip: the i-th values together).\n"
+    "\n"
+    "Outputs (in the folder given with -o):\n"
+    "  results.csv          one row per case: case_id, every parameter, Eavg_lx, Emin_lx,\n"
+    "                       Emax_lx, U0 = Emin/Eavg, Ud = Emin/Emax (\"Eavg_lx@<grid>\" when the\n"
+    "                       study has several grids), paths of the case's images\n"
+    "  design-explorer.csv  the same as in:/out:/img: columns (Design Explorer)\n"
+    "  charts/              each metric against each varied parameter (PNG, rendered through\n"
+    "                       X: where there is no display, run under xvfb-run -a)\n"
+    "  cases/<case-id>/     what `penumbra grid` writes (<grid>.csv, <grid>.res, summary.json)\n"
+    "                       and case.json (values, metrics, fingerprint)\n"
+    "  study.json           the cases and their fingerprints, for --resume and merge\n"
+    "\n"
+    "Nothing is lost: a case folder appears only when complete. Running the same command again\n"
+    "skips the finished cases (recomputing those whose scene, values, grids or estimator changed)\n"
+    "and rebuilds the tables; after a kill or Ctrl-C, rerun it (or add --resume).\n"
+    "With --shard I/N a run computes every N-th case; run the N shards anywhere (a Slurm job\n"
+    "array, GNU parallel: docs/cluster.md) and join their folders with `penumbra merge`.\n"
+    "\n"
+    "Examples:\n"
+    "  penumbra sweep studies/window-width.yaml -o out/window-width\n"
+    "  penumbra sweep studies/panel-spacing-flux.yaml -o out/shard-1 --shard 1/2\n"
+    "\n"
+    "Exit status: 0 done; 1 error (device, output folder, options); 2 invalid study, or a case\n"
+    "whose scene is invalid (named with its values), as file:line: key: message. A study with an\n"
+    "invalid case computes nothing.";
+
+inline constexpr const char* kMerge =
+    "Join the output folders of the shards of one sweep (penumbra sweep --shard I/N) into one: "
+    "the case folders, results.csv, design-explorer.csv and the charts, as one unsharded run "
+    "would have written them.";
+
+inline constexpr const char* kMergeFooter =
+    "Every folder must hold the same study (same cases, values, scenes and estimator). Cases\n"
+    "missing from every folder are reported and left out of the table.\n"
+    "\n"
+    "Example:\n"
+    "  penumbra merge out/shard-1 out/shard-2 -o out/panels";
 
 inline constexpr const char* kDevices =
     "List the OpenCL devices: index (what --device takes), type, name, platform, compute units.";

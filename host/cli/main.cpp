@@ -4,7 +4,13 @@
 #include "cli/devices_command.hpp"
 #include "cli/grid_command.hpp"
 #include "cli/help_text.hpp"
+#include "cli/option_checks.hpp"
+#include "cli/sweep_options.hpp"
 #include "cli/version.hpp"
+#include "viz/line_chart_writer.hpp"
+#include "viz/plot_cli.hpp"
+#include "viz/plot_command.hpp"
+#include "viz/render_png.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{penumbra::help::kProgram, "penumbra"};
@@ -18,26 +24,44 @@ int main(int argc, char** argv) {
   gridCommand->add_option("scene", grid.scene, "Scene file (YAML, scene format v1)")->required();
   gridCommand->add_option("-o,--output", grid.output, "Output directory (created if missing)")
       ->required();
-  gridCommand
-      ->add_option("--device", grid.device,
-                   "OpenCL device: auto (first GPU, else CPU), cpu, gpu, or an index from "
-                   "`penumbra devices`")
-      ->capture_default_str();
-  gridCommand->add_flag("--reference", grid.reference,
-                        "Use the host reference estimator instead of the OpenCL kernel");
-  gridCommand
-      ->add_option("--reference-n", grid.referenceN,
-                   "Reference: about N*N sample points per source face")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+  penumbra::cli::addEstimatorOptions(*gridCommand, grid.device, grid.reference, grid.referenceN);
   // One name per --grid, so that `--grid a scene.yaml` does not swallow the scene.
   gridCommand
       ->add_option("--grid", grid.grids,
                    "Compute only this grid (repeat for several; default: all)")
       ->allow_extra_args(false);
   gridCommand->add_flag("-q,--quiet", grid.quiet, "No progress and no table; errors only");
+  bool gridNoCulling = false;
+  gridCommand->add_flag("--no-culling", gridNoCulling,
+                        "Test every occluder at every point (no shadow volumes): slower, the same "
+                        "numbers; for comparison");
+  std::vector<std::string> gridSettings;
+  gridCommand
+      ->add_option("--set", gridSettings,
+                   "Give a scene parameter a value other than its default: NAME=VALUE (repeat "
+                   "for several)")
+      ->allow_extra_args(false)
+      ->check(penumbra::cli::kParameterAssignment);
+  bool plotAfterGrid = false;
+  penumbra::viz::PlotOptions gridPlot;
+  penumbra::viz::addPlotFlag(*gridCommand, plotAfterGrid, gridPlot);
+
+  penumbra::SweepOptions sweep;
+  CLI::App* sweepCommand = penumbra::cli::addSweepCommand(app, sweep);
+  penumbra::MergeOptions merge;
+  CLI::App* mergeCommand = penumbra::cli::addMergeCommand(app, merge);
+  // Sweep charts are drawn by viz/ (host/ never includes it). VTK aborts without X, so the display
+  // is checked first: without one a sweep says how to get charts instead of crashing.
+  sweep.charts =
+      merge.charts = [](const penumbra::LineChart& chart, const std::filesystem::path& png) {
+        penumbra::viz::requireDisplay();
+        penumbra::viz::writeLineChart(chart, png);
+      };
 
   CLI::App* devicesCommand = app.add_subcommand("devices", penumbra::help::kDevices);
+
+  penumbra::viz::PlotOptions plot;
+  CLI::App* plotCommand = penumbra::viz::addPlotCommand(app, plot);
 
   try {
     app.parse(argc, argv);
@@ -47,7 +71,19 @@ int main(int argc, char** argv) {
     const int status = app.exit(e);
     return status == 0 ? 0 : 1;
   }
-  if (*gridCommand) return penumbra::runGridCommand(grid);
+  if (*gridCommand) {
+    grid.culling = !gridNoCulling;
+    grid.parameters = penumbra::cli::parameterAssignments(gridSettings);
+    const int status = penumbra::runGridCommand(grid);
+    if (status != 0 || !plotAfterGrid) return status;
+    gridPlot.folder = grid.output;
+    gridPlot.device = grid.device;
+    gridPlot.quiet = grid.quiet;
+    return penumbra::viz::runPlotCommand(gridPlot);
+  }
+  if (*plotCommand) return penumbra::viz::runPlotCommand(plot);
+  if (*sweepCommand) return penumbra::runSweepCommand(sweep);
+  if (*mergeCommand) return penumbra::runMergeCommand(merge);
   if (*devicesCommand) return penumbra::runDevicesCommand();
   return 1;
 }

@@ -6,14 +6,16 @@
 #include <cstddef>
 #include <string>
 
+#include "evaluation/scene_evaluation.hpp"
+
 namespace penumbra {
 
-class ProgressLine {
+class ProgressLine : public GridObserver {
  public:
   explicit ProgressLine(bool enabled);
-  void startGrid(const std::string& name, std::size_t points);
-  void update(std::size_t done, std::size_t total);
-  void finishGrid(double seconds);
+  void startGrid(const std::string& name, std::size_t points) override;
+  void update(std::size_t done, std::size_t total) override;
+  void finishGrid(double seconds) override;
 
  private:
   bool enabled_;

@@ -12,9 +12,6 @@
 
 namespace penumbra {
 
-namespace {
-
-// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
 std::string csvField(const std::string& text) {
   if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
   std::string quoted = "\"";
@@ -25,17 +22,26 @@ std::string csvField(const std::string& text) {
   return quoted + "\"";
 }
 
-// JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
 void writeFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body) {
   std::ofstream out(path, std::ios::binary);
   if (!out) throw std::runtime_error("cannot create " + path.string());
   body(out);
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+namespace {
+
+// JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
+nlohmann::json number(double value) {
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+}
+
+// {"window_width_m": 1.6, ...}: the values the scene's parameters had in this run.
+nlohmann::json parameterJson(const ParameterValues& values) {
+  nlohmann::json object = nlohmann::json::object();
+  for (const ParameterValue& p : values) object[p.name] = p.value;
+  return object;
 }
 
 }  // namespace
@@ -50,6 +56,26 @@ std::string gridFileStem(const std::string& gridName) {
   // "" and names starting with '.' would be hidden or special ("..").
   if (stem.empty() || stem.front() == '.') stem.insert(0, "grid_");
   return stem;
+}
+
+std::string gridKindName(GridKind kind) {
+  switch (kind) {
+    case GridKind::WorkPlane:
+      return "work-plane";
+    case GridKind::Rect:
+      return "rect";
+    case GridKind::Points:
+      return "points";
+  }
+  throw std::logic_error("unknown GridKind");
+}
+
+GridKind gridKindFromName(const std::string& name) {
+  for (GridKind kind : {GridKind::WorkPlane, GridKind::Rect, GridKind::Points}) {
+    if (gridKindName(kind) == name) return kind;
+  }
+  throw std::runtime_error("unknown grid kind '" + name +
+                           "' (expected work-plane, rect or points)");
 }
 
 std::vector<std::string> resultFileNames(const RunReport& report) {
@@ -92,6 +118,11 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"name", grid.name},
         {"csv", stem + ".csv"},
         {"res", stem + ".res"},
+        {"kind", gridKindName(grid.kind)},
+        {"columns",
+         grid.kind == GridKind::Points ? nlohmann::json(nullptr) : nlohmann::json(grid.columns)},
+        {"rows",
+         grid.kind == GridKind::Points ? nlohmann::json(nullptr) : nlohmann::json(grid.rows)},
         {"points", m.points},
         {"points_inside_solids", m.pointsInsideSolids},
         {"spacing_m", m.spacing > 0.0 ? number(m.spacing) : nlohmann::json(nullptr)},
@@ -106,6 +137,13 @@ nlohmann::json summaryJson(const RunReport& report) {
   nlohmann::json summary = {
       {"penumbra_version", report.version},
       {"scene", report.sceneFile.string()},
+      // `penumbra plot` reads the scene again, from wherever it is started.
+      {"scene_absolute",
+       report.sceneFile.empty()
+           ? nlohmann::json(nullptr)
+           : nlohmann::json(
+                 std::filesystem::absolute(report.sceneFile).lexically_normal().string())},
+      {"parameters", parameterJson(report.parameters)},
       {"estimator", report.estimator},
       {"device", report.device},
       {"timing",
@@ -118,18 +156,21 @@ nlohmann::json summaryJson(const RunReport& report) {
   return summary;
 }
 
+void writeResultFiles(const RunReport& report, const std::filesystem::path& directory) {
+  resultFileNames(report);  // refuses clashing names before anything is created
+  for (const GridReport& grid : report.grids) {
+    const std::string stem = gridFileStem(grid.name);
+    writeFile(directory / (stem + ".csv"), [&](std::ostream& out) { writeGridCsv(out, grid); });
+    writeFile(directory / (stem + ".res"), [&](std::ostream& out) { writeGridRes(out, grid); });
+  }
+  writeFile(directory / "summary.json",
+            [&](std::ostream& out) { out << summaryJson(report).dump(2) << "\n"; });
+}
+
 void writeResults(const RunReport& report, const std::filesystem::path& directory) {
   resultFileNames(report);  // refuses clashing names before anything is created
   StagedDirectory staged(directory);
-  for (const GridReport& grid : report.grids) {
-    const std::string stem = gridFileStem(grid.name);
-    writeFile(staged.staging() / (stem + ".csv"),
-              [&](std::ostream& out) { writeGridCsv(out, grid); });
-    writeFile(staged.staging() / (stem + ".res"),
-              [&](std::ostream& out) { writeGridRes(out, grid); });
-  }
-  writeFile(staged.staging() / "summary.json",
-            [&](std::ostream& out) { out << summaryJson(report).dump(2) << "\n"; });
+  writeResultFiles(report, staged.staging());
   staged.commit();
 }
 

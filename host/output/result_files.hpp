@@ -6,6 +6,7 @@
 //   names
 // Numbers are written in the shortest form that reads back to the same double.
 #include <filesystem>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,6 +21,11 @@ namespace penumbra {
 // '_' (grid names come from the scene; they must not reach outside the output directory).
 std::string gridFileStem(const std::string& gridName);
 
+// The `kind` of a grid in summary.json: "work-plane", "rect" or "points". The reverse throws
+// std::runtime_error for any other name.
+std::string gridKindName(GridKind kind);
+GridKind gridKindFromName(const std::string& name);
+
 // The names of the files writeResults creates for `report`. Throws std::runtime_error when two
 // grids would share a file.
 std::vector<std::string> resultFileNames(const RunReport& report);
@@ -27,6 +33,15 @@ std::vector<std::string> resultFileNames(const RunReport& report);
 void writeGridCsv(std::ostream& out, const GridReport& grid);
 void writeGridRes(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
+
+// Writes every file of the run into the existing `directory`, as they are (a sweep's case folder
+// is staged as a whole by its caller).
+void writeResultFiles(const RunReport& report, const std::filesystem::path& directory);
+
+// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+std::string csvField(const std::string& text);
+// Creates `path` and writes it with `body`; throws std::runtime_error naming it on failure.
+void writeFile(const std::filesystem::path& path, const std::function<void(std::ostream&)>& body);
 
 // Writes every file of the run into `directory` atomically (see staged_directory.hpp): either all
 // of them appear, or none does. Throws std::runtime_error or std::filesystem::filesystem_error.

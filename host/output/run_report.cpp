@@ -6,6 +6,9 @@ GridReport makeGridReport(const Scene& scene, const CalculationGrid& grid,
                           const GridEvaluation& evaluation) {
   GridReport report;
   report.name = evaluation.name;
+  report.kind = grid.kind;
+  report.columns = grid.kind == GridKind::Points ? 0 : grid.columns;
+  report.rows = grid.kind == GridKind::Points ? 0 : grid.rows;
   report.points = evaluation.samples.points;
   report.illuminance = evaluation.illuminance;
   report.seconds = evaluation.seconds;

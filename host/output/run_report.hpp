@@ -14,6 +14,10 @@ namespace penumbra {
 
 struct GridReport {
   std::string name;
+  // The layout, so that plots (viz/) can rebuild the grid from the files: planar grids are
+  // row-major, `columns` along u, `rows` along v; 0 × 0 for point lists.
+  GridKind kind = GridKind::Points;
+  int columns = 0, rows = 0;
   std::vector<SamplePoint> points;        // in the grid's order
   std::vector<std::string> insideSolids;  // per point: the containing solid's name, "" for none
   std::vector<double> illuminance;        // lx per point; 0 inside solids
@@ -24,6 +28,7 @@ struct GridReport {
 struct RunReport {
   std::string version;              // penumbra's
   std::filesystem::path sceneFile;  // as given on the command line
+  ParameterValues parameters;       // the scene's parameters as computed (defaults or --set)
   std::string estimator;            // "kernel" or "reference"
   int referenceN = 0;               // the reference's n (sub-elements per face ~ n²); 0 for kernel
   std::string device;               // what computed it, in words

@@ -12,7 +12,8 @@ std::optional<double> readSpacing(const Reader& reader, const MapView& map) {
   const std::optional<Field> field = map.find("spacing");
   if (!field || (field->node.IsScalar() && field->node.Scalar() == "auto")) return std::nullopt;
   double probe = 0.0;
-  if (!YAML::convert<double>::decode(field->node, probe)) {
+  const bool expression = field->node.IsScalar() && expressionText(field->node.Scalar());
+  if (!expression && !YAML::convert<double>::decode(field->node, probe)) {
     reader.fail(field->where, "expected a spacing in m or 'auto', got '" +
                                   (field->node.IsScalar() ? field->node.Scalar() : "a list") + "'");
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/convex_polyhedron.hpp"
+#include "scene/parameters.hpp"
 
 namespace penumbra {
 
@@ -67,6 +68,7 @@ struct Scene {
   std::vector<Source> sources;
   std::vector<CalculationGrid> grids;
   std::optional<Room> room;
+  ParameterValues parameters;  // the values it was built with: its defaults unless overridden
 
   // Diagonal of the bounding box of all geometry (m); the scale of Tolerance.
   double size() const;

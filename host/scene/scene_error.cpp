@@ -25,6 +25,7 @@ SceneError::SceneError(std::filesystem::path file, int line, std::string key,
     : std::runtime_error(describe(file, line, key, message)),
       file_(std::move(file)),
       line_(line),
-      key_(std::move(key)) {}
+      key_(std::move(key)),
+      message_(message) {}
 
 }  // namespace penumbra

@@ -3,15 +3,15 @@
 #include "scene/scene_loader.hpp"
 
 #include <algorithm>
-#include <fstream>
 #include <limits>
-#include <sstream>
 #include <variant>
 
+#include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
 #include "geometry/tolerance.hpp"
 #include "scene/grid_builder.hpp"
+#include "scene/parameter_reader.hpp"
 #include "scene/room_builder.hpp"
 #include "scene/shape_builder.hpp"
 #include "scene/shape_reader.hpp"
@@ -77,27 +77,58 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   return scene;
 }
 
-}  // namespace
-
-Scene parseScene(const std::string& yamlText, const std::filesystem::path& file) {
-  YAML::Node document;
-  try {
-    document = YAML::Load(yamlText);
-  } catch (const YAML::Exception& e) {
-    throw SceneError(file, e.mark.line + 1, "", "this is not valid YAML: " + e.msg);
-  }
-  const Reader reader(file);
-  return buildScene(readSceneSpec(reader, document), file);
+// `key` is `path` or lies below it ("sources[1]" holds "sources[1].flux", not "sources[10]").
+bool isWithin(const std::string& key, const std::string& path) {
+  return key.starts_with(path) &&
+         (key.size() == path.size() || key[path.size()] == '.' || key[path.size()] == '[');
 }
 
-Scene loadScene(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in || std::filesystem::is_directory(file)) {
-    throw SceneError(file, 0, "", "cannot read the scene file (does it exist?)");
+// A value that came from expressions is wrong (a window that no longer fits its wall): the message
+// shows the expressions at or below the failing key, what they gave, and the parameters they used.
+SceneError withExpressions(const SceneError& error, const Reader& reader) {
+  if (error.key().empty() || error.file() != reader.file()) return error;
+  std::string notes;
+  ParameterValues used;
+  for (const EvaluatedExpression& e : reader.evaluated()) {
+    if (!isWithin(e.where.key, error.key()) && !isWithin(error.key(), e.where.key)) continue;
+    notes += fmt::format("{}{} = ${{{}}} = {}", notes.empty() ? "" : "; ", e.where.key,
+                         e.expression, e.value);
+    for (const ParameterValue& p : reader.expressions()->used(e.expression)) {
+      if (std::find(used.begin(), used.end(), p) == used.end()) used.push_back(p);
+    }
   }
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseScene(text.str(), file);
+  if (notes.empty()) return error;
+  if (!used.empty()) notes += "; with " + describeParameters(used);
+  return SceneError(error.file(), error.line(), error.key(), error.message() + " (" + notes + ")");
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& yamlText, const std::filesystem::path& file,
+                 const ParameterValues& parameters) {
+  const YAML::Node document = parseYaml(yamlText, file);
+  const Reader plain(file);
+  const ParameterValues values =
+      applyOverrides(plain, readDeclaredParameters(plain, document), parameters);
+  ExpressionEvaluator expressions(values);
+  const Reader reader(file, &expressions);
+  try {
+    Scene scene = buildScene(readSceneSpec(reader, document), file);
+    scene.parameters = values;
+    return scene;
+  } catch (const SceneError& e) {
+    throw withExpressions(e, reader);
+  }
+}
+
+Scene loadScene(const std::filesystem::path& file, const ParameterValues& parameters) {
+  return parseScene(readInputFile(file, "the scene file"), file, parameters);
+}
+
+ParameterValues loadSceneParameters(const std::filesystem::path& file) {
+  const Reader plain(file);
+  return readDeclaredParameters(plain, parseYaml(readInputFile(file, "the scene file"), file))
+      .defaults;
 }
 
 }  // namespace penumbra

@@ -216,7 +216,9 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
                                   std::to_string(kFormatVersion) + "'");
   }
   const MapView root = reader.map(reader.root(document), "the scene");
-  root.allowOnly({"penumbra", "materials", "room", "solids", "sources", "grids"}, "a scene");
+  // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
+  root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids"},
+                 "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
         Where{root.where().line, "penumbra"},

@@ -1,6 +1,8 @@
 #include "scene/yaml_reader.hpp"
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 
@@ -41,6 +43,24 @@ std::string childKey(const std::string& parent, std::string_view child) {
 
 std::string indexKey(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
+}
+
+std::string readInputFile(const std::filesystem::path& file, std::string_view what) {
+  std::ifstream in(file);
+  if (!in || std::filesystem::is_directory(file)) {
+    throw SceneError(file, 0, "", "cannot read " + std::string(what) + " (does it exist?)");
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+YAML::Node parseYaml(const std::string& text, const std::filesystem::path& file) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    throw SceneError(file, e.mark.line + 1, "", "this is not valid YAML: " + e.msg);
+  }
 }
 
 void fail(const std::filesystem::path& file, const Where& where, const std::string& message) {
@@ -141,8 +161,39 @@ std::string Reader::text(const Field& field) const {
   return field.node.Scalar();
 }
 
+double Reader::evaluate(const Field& field, const std::string& expression) const {
+  const std::string shown = "${" + expression + "}";
+  if (expressions_ == nullptr) {
+    fail(field.where, "expected a number, got '" + shown +
+                          "' (parameter defaults and study files take plain numbers)");
+  }
+  double value = 0.0;
+  try {
+    value = expressions_->evaluate(expression);
+  } catch (const std::invalid_argument& e) {
+    std::string names;
+    for (const ParameterValue& p : expressions_->values()) {
+      names += (names.empty() ? "" : ", ") + p.name;
+    }
+    fail(field.where, "cannot evaluate " + shown + ": " + e.what() +
+                          (names.empty() ? " (the scene declares no parameters; add "
+                                           "'parameters: {name: default}')"
+                                         : " (the scene's parameters: " + names + ")"));
+  }
+  if (!std::isfinite(value)) {
+    const ParameterValues used = expressions_->used(expression);
+    fail(field.where, shown + " gives " + formatNumber(value) + ", not a finite number" +
+                          (used.empty() ? "" : " (with " + describeParameters(used) + ")"));
+  }
+  evaluated_.push_back(EvaluatedExpression{field.where, expression, value});
+  return value;
+}
+
 double Reader::number(const Field& field) const {
   if (!field.node.IsScalar()) fail(field.where, "expected a number, got " + describe(field.node));
+  if (const std::optional<std::string> expression = expressionText(field.node.Scalar())) {
+    return evaluate(field, *expression);
+  }
   double value = 0.0;
   try {
     value = field.node.as<double>();

@@ -14,6 +14,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "geometry/vec.hpp"
+#include "scene/parameters.hpp"
 
 namespace penumbra::scenefile {
 
@@ -25,6 +26,12 @@ struct Where {
 
 std::string childKey(const std::string& parent, std::string_view child);  // "a" + "b" → "a.b"
 std::string indexKey(const std::string& parent, std::size_t index);       // "a" + 3 → "a[3]"
+
+// The text of `file`; one that cannot be read is a SceneError naming it as `what` ("the scene
+// file").
+std::string readInputFile(const std::filesystem::path& file, std::string_view what);
+// The YAML document in `text`; invalid YAML is a SceneError at its line.
+YAML::Node parseYaml(const std::string& text, const std::filesystem::path& file);
 
 // Throws the SceneError for `where` in `file`.
 [[noreturn]] void fail(const std::filesystem::path& file, const Where& where,
@@ -63,10 +70,20 @@ class MapView {
   std::vector<Entry> entries_;
 };
 
+// A number written as "${expression}" and what it gave, kept so that a later error about the
+// value (a window that no longer fits its wall) can show the expression behind it.
+struct EvaluatedExpression {
+  Where where;
+  std::string expression;
+  double value = 0.0;
+};
+
 // Reads typed values out of Fields; every mistake becomes a SceneError naming `file`.
 class Reader {
  public:
-  explicit Reader(std::filesystem::path file) : file_(std::move(file)) {}
+  // Without `expressions`, "${...}" is not a number (study files, parameter defaults).
+  explicit Reader(std::filesystem::path file, const ExpressionEvaluator* expressions = nullptr)
+      : file_(std::move(file)), expressions_(expressions) {}
 
   const std::filesystem::path& file() const { return file_; }
   [[noreturn]] void fail(const Where& where, const std::string& message) const;
@@ -79,7 +96,7 @@ class Reader {
   std::vector<Field> list(const Field& field, std::string_view what) const;
 
   std::string text(const Field& field) const;
-  double number(const Field& field) const;  // finite
+  double number(const Field& field) const;  // finite; "${expression}" is evaluated
   double nonNegative(const Field& field, std::string_view unit) const;
   double positive(const Field& field, std::string_view unit) const;
   std::vector<double> numbers(const Field& field, std::size_t count) const;
@@ -88,8 +105,17 @@ class Reader {
   // A list of at least `minimum` points [x, y, z].
   std::vector<Vec3> points(const Field& field, std::size_t minimum) const;
 
+  const ExpressionEvaluator* expressions() const { return expressions_; }
+  // Every expression number() has evaluated so far, in reading order.
+  const std::vector<EvaluatedExpression>& evaluated() const { return evaluated_; }
+
  private:
+  double evaluate(const Field& field, const std::string& expression) const;
+
   std::filesystem::path file_;
+  const ExpressionEvaluator* expressions_ = nullptr;
+  // A record for messages, not state the reading depends on; hence mutable in a const reader.
+  mutable std::vector<EvaluatedExpression> evaluated_;
 };
 
 // Formats a number for a message: the shortest form that reads back the same (0.2, 3400).

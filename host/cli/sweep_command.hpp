@@ -1,0 +1,38 @@
+#pragma once
+// `penumbra sweep` and `penumbra merge`: a study file in, a folder of cases, tables and charts
+// out (docs/sweeps.md). Kept free of CLI11, like grid_command.hpp.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "output/sweep_files.hpp"
+
+namespace penumbra {
+
+struct SweepOptions {
+  std::filesystem::path study;
+  std::filesystem::path output;
+  std::string device = "auto";  // as for `penumbra grid`
+  bool reference = false;
+  int referenceN = 64;
+  std::string shard;  // "i/N"; empty: every case
+  bool resume = false;
+  bool quiet = false;
+  ChartWriter charts;    // set by main() when the binary has viz/
+  CasePlotWriter plots;  // likewise
+};
+
+struct MergeOptions {
+  std::vector<std::filesystem::path> inputs;
+  std::filesystem::path output;
+  bool quiet = false;
+  ChartWriter charts;
+};
+
+// Exit status: 0 done; 1 error (device, files, options, --resume without a run to resume);
+// 2 the study or the scene of one of its cases is invalid (nothing is written then).
+int runSweepCommand(const SweepOptions& options);
+// Exit status: 0 done; 1 error (not sweep folders, different studies, files).
+int runMergeCommand(const MergeOptions& options);
+
+}  // namespace penumbra

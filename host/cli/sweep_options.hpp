@@ -1,0 +1,39 @@
+#pragma once
+// The command-line options of `penumbra sweep` and `penumbra merge` (CLI11), kept beside
+// main.cpp so that main() only registers and dispatches.
+#include <CLI/CLI.hpp>
+
+#include "cli/help_text.hpp"
+#include "cli/option_checks.hpp"
+#include "cli/sweep_command.hpp"
+
+namespace penumbra::cli {
+
+inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
+  CLI::App* command = app.add_subcommand("sweep", help::kSweep);
+  command->footer(help::kSweepFooter);
+  command->add_option("study", options.study, "Study file (YAML, docs/sweeps.md)")->required();
+  command->add_option("-o,--output", options.output, "Output folder (created if missing)")
+      ->required();
+  command->add_option("--shard", options.shard,
+                      "Run only shard I of N: every N-th case, starting with case I (1 <= I <= N)");
+  command->add_flag("--resume", options.resume,
+                    "Continue a run into the output folder it used: fails unless the folder "
+                    "holds this very study; computes what is missing, rebuilds the tables");
+  addEstimatorOptions(*command, options.device, options.reference, options.referenceN);
+  command->add_flag("-q,--quiet", options.quiet, "No progress and no summary; errors only");
+  return command;
+}
+
+inline CLI::App* addMergeCommand(CLI::App& app, MergeOptions& options) {
+  CLI::App* command = app.add_subcommand("merge", help::kMerge);
+  command->footer(help::kMergeFooter);
+  command->add_option("folders", options.inputs, "Output folders of `penumbra sweep --shard`")
+      ->required();
+  command->add_option("-o,--output", options.output, "The joined folder (created if missing)")
+      ->required();
+  command->add_flag("-q,--quiet", options.quiet, "No summary; errors only");
+  return command;
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,50 @@
+#include "evaluation/estimator.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "reference/reference_illuminance.hpp"
+
+namespace penumbra {
+
+Estimator::Estimator(const EstimatorOptions& options, const Scene& scene) : scene_(&scene) {
+  if (options.reference) {
+    const int n = options.referenceN;
+    if (n < 1) throw std::invalid_argument(fmt::format("--reference-n {}: must be at least 1", n));
+    referenceN_ = n;
+    name_ = "reference";
+    device_ = fmt::format("host reference (double precision, n = {})", n);
+    // About 2^24 samples per source face per batch: a progress step every fraction of a second
+    // whatever n is.
+    batchSize_ = std::clamp<std::size_t>((std::size_t{1} << 24) / (static_cast<std::size_t>(n) * n),
+                                         1, 4096);
+    return;
+  }
+  clDevice_.emplace(compute::Device::select(options.device));
+  const compute::DeviceInfo& info = clDevice_->info();
+  name_ = "kernel";
+  device_ = fmt::format("{} ({}, {})", info.name, info.platform, info.type);
+  engine_ = std::make_unique<IlluminanceEngine>(*clDevice_, scene, EngineOptions{options.culling});
+  if (!options.culling) device_ += ", no culling";
+  batchSize_ = 1 << 16;  // large enough to keep a GPU busy, small enough for progress
+}
+
+Estimator::~Estimator() = default;
+
+void Estimator::setScene(const Scene& scene) {
+  scene_ = &scene;
+  if (engine_) engine_->setScene(scene);
+}
+
+std::vector<double> Estimator::illuminance(std::span<const SamplePoint> points) {
+  if (engine_) return engine_->illuminance(points);
+  return referenceIlluminance(*scene_, points, referenceN_);
+}
+
+IlluminanceEstimator Estimator::function() {
+  return [this](std::span<const SamplePoint> points) { return illuminance(points); };
+}
+
+}  // namespace penumbra

@@ -1,0 +1,157 @@
+#include "output/result_reader.hpp"
+
+#include <fmt/format.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "lighting/grid_metrics.hpp"
+#include "output/result_files.hpp"
+
+namespace penumbra {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside";
+
+// One CSV record; RFC 4180 quotes (the only field that can have them is `inside`).
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      fields.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+// from_chars reads the shortest round-trip form back to the very same double.
+double parseNumber(const std::string& text, const std::string& where) {
+  double value = 0.0;
+  const char* end = text.data() + text.size();
+  const auto [stop, error] = std::from_chars(text.data(), end, value);
+  if (error != std::errc() || stop != end) {
+    throw std::runtime_error(fmt::format("{}: '{}' is not a number", where, text));
+  }
+  return value;
+}
+
+double numberOrNaN(const nlohmann::json& value) {
+  return value.is_number() ? value.get<double>() : std::numeric_limits<double>::quiet_NaN();
+}
+
+nlohmann::json readSummary(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) {
+    throw std::runtime_error(fmt::format(
+        "{}: no summary.json: is this the output directory of `penumbra grid`?", file.string()));
+  }
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
+  }
+}
+
+GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
+  GridReport grid;
+  grid.name = entry.at("name").get<std::string>();
+  // Runs written before plots existed have no layout: their grids are read as point lists.
+  grid.kind = gridKindFromName(entry.value("kind", std::string("points")));
+  if (grid.kind != GridKind::Points) {
+    grid.columns = entry.at("columns").get<int>();
+    grid.rows = entry.at("rows").get<int>();
+  }
+  grid.seconds = entry.value("time_s", 0.0);
+  const fs::path csv = directory / entry.at("csv").get<std::string>();
+  std::ifstream in(csv, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + csv.string());
+  readGridCsv(in, csv.string(), grid);
+
+  const std::size_t expected = entry.at("points").get<std::size_t>();
+  if (grid.points.size() != expected) {
+    throw std::runtime_error(fmt::format("{}: {} rows, but summary.json says {} points",
+                                         csv.string(), grid.points.size(), expected));
+  }
+  if (grid.kind != GridKind::Points &&
+      static_cast<std::size_t>(grid.columns) * grid.rows != grid.points.size()) {
+    throw std::runtime_error(fmt::format("{}: {} rows, but the grid is {} × {}", csv.string(),
+                                         grid.points.size(), grid.columns, grid.rows));
+  }
+  std::vector<int> inside;
+  for (const std::string& solid : grid.insideSolids) inside.push_back(solid.empty() ? -1 : 0);
+  const double spacing = entry.contains("spacing_m") ? numberOrNaN(entry["spacing_m"]) : 0.0;
+  grid.metrics = gridMetrics(grid.illuminance, inside, std::isnan(spacing) ? 0.0 : spacing);
+  return grid;
+}
+
+}  // namespace
+
+void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
+  std::string line;
+  if (!std::getline(in, line) || line != kCsvHeader) {
+    throw std::runtime_error(fmt::format("{}:1: expected the header {}", fileName, kCsvHeader));
+  }
+  for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
+    if (line.empty()) continue;
+    const std::string where = fmt::format("{}:{}", fileName, lineNumber);
+    const std::vector<std::string> f = csvFields(line);
+    if (f.size() != 8) {
+      throw std::runtime_error(fmt::format("{}: {} fields, expected 8", where, f.size()));
+    }
+    SamplePoint point;
+    point.position =
+        Vec3(parseNumber(f[0], where), parseNumber(f[1], where), parseNumber(f[2], where));
+    point.normal =
+        Vec3(parseNumber(f[3], where), parseNumber(f[4], where), parseNumber(f[5], where));
+    grid.points.push_back(point);
+    grid.illuminance.push_back(parseNumber(f[6], where));
+    grid.insideSolids.push_back(f[7]);
+  }
+}
+
+RunReport readResults(const fs::path& directory) {
+  const nlohmann::json summary = readSummary(directory / "summary.json");
+  RunReport run;
+  try {
+    run.version = summary.value("penumbra_version", std::string());
+    const nlohmann::json absolute = summary.value("scene_absolute", nlohmann::json(nullptr));
+    run.sceneFile = absolute.is_string() ? fs::path(absolute.get<std::string>())
+                                         : fs::path(summary.at("scene").get<std::string>());
+    run.estimator = summary.value("estimator", std::string());
+    run.referenceN = summary.value("reference_n", 0);
+    run.device = summary.value("device", std::string());
+    if (summary.contains("timing")) {
+      const nlohmann::json& timing = summary["timing"];
+      run.loadSeconds = timing.value("load_s", 0.0);
+      run.setupSeconds = timing.value("setup_s", 0.0);
+      run.totalSeconds = timing.value("total_s", 0.0);
+    }
+    for (const nlohmann::json& entry : summary.at("grids")) {
+      run.grids.push_back(readGrid(entry, directory));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(
+        fmt::format("{}: {}", (directory / "summary.json").string(), e.what()));
+  }
+  return run;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,52 @@
+#pragma once
+// The files of a parameter sweep (docs/sweeps.md), written so that nothing is ever half there:
+//   OUT/study.json, results.csv, design-explorer.csv   each replaced in one rename
+//   OUT/cases/<id>/                                    a whole case folder appears in one rename
+//   OUT/charts/*.png                                   drawn by a hook (viz/), staged like the rest
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "output/line_chart.hpp"
+#include "output/run_report.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+// Draws one chart into a PNG file (viz::writeLineChart when the binary has viz/).
+using ChartWriter = std::function<void(const LineChart& chart, const std::filesystem::path& png)>;
+// Draws a case's plots into `directory`, which already holds the files of writeResultFiles, and
+// returns the files it wrote, relative to `directory`.
+using CasePlotWriter = std::function<std::vector<std::string>(
+    const Scene& scene, const RunReport& report, const std::filesystem::path& directory)>;
+
+struct ChartFile {
+  LineChart chart;
+  std::string fileName;  // in OUT/charts
+};
+
+// Writes one finished case into `folder` (OUT/cases/<id>): the files `penumbra grid` writes, the
+// plots (when `plots` is set), and last `case.json` (= `caseJson` with "images": the plots'
+// files). Staged in a hidden sibling and renamed at the end; a stale folder of that name is
+// removed first, and so are leftovers of killed runs of the same case.
+void writeCaseFolder(const std::filesystem::path& folder, const Scene& scene,
+                     const RunReport& report, nlohmann::ordered_json caseJson,
+                     const CasePlotWriter& plots);
+
+// Copies a finished case folder to `to` the same way (penumbra merge).
+void copyCaseFolder(const std::filesystem::path& from, const std::filesystem::path& to);
+
+// Writes (name, text) files into the directory `out` (created if missing), each replacing its
+// namesake in one rename; other files stay.
+void writeTextFiles(const std::filesystem::path& out,
+                    const std::vector<std::pair<std::string, std::string>>& files);
+
+// Draws every chart into `directory` with `writer`, staged, then renamed into place.
+void writeCharts(const std::filesystem::path& directory, const std::vector<ChartFile>& charts,
+                 const ChartWriter& writer);
+
+}  // namespace penumbra

@@ -1,0 +1,88 @@
+#include "study/case_fingerprint.hpp"
+
+#include <bit>
+#include <cstdint>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+// FNV-1a: tells changed inputs apart; nothing here needs a cryptographic hash.
+class Fnv1a {
+ public:
+  void add(std::string_view text) {
+    for (unsigned char c : text) {
+      hash_ ^= c;
+      hash_ *= 0x100000001b3ULL;
+    }
+    add('\n');
+  }
+  void add(char c) {
+    hash_ ^= static_cast<unsigned char>(c);
+    hash_ *= 0x100000001b3ULL;
+  }
+  // The bits of the double: exact, and fast enough for grids of millions of points.
+  void add(double value) {
+    const auto bits = std::bit_cast<std::uint64_t>(value);
+    for (int byte = 0; byte < 8; ++byte) add(static_cast<char>((bits >> (8 * byte)) & 0xff));
+  }
+  void add(const Vec3& v) {
+    add(v.x());
+    add(v.y());
+    add(v.z());
+  }
+  std::string hex() const { return fmt::format("{:016x}", hash_); }
+
+ private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+void addPolygon(Fnv1a& h, const ConvexPolygon& polygon) {
+  h.add(std::string_view("polygon"));
+  for (const Vec3& v : polygon.vertices()) h.add(v);
+}
+
+}  // namespace
+
+std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
+  Fnv1a h;
+  h.add(std::string_view("penumbra case 1"));
+  h.add(std::string_view(outputs.estimator));
+  h.add(outputs.plots ? 'p' : '-');
+  for (const ParameterValue& p : scene.parameters) {
+    h.add(std::string_view(p.name));
+    h.add(p.value);
+  }
+  for (const Material& m : scene.materials) {
+    h.add(std::string_view(m.name));
+    h.add(m.reflectance);
+  }
+  for (const Solid& solid : scene.solids) {
+    h.add(std::string_view(solid.name));
+    h.add(static_cast<double>(solid.material));
+    for (std::size_t f = 0; f < solid.shape.faces().size(); ++f) {
+      addPolygon(h, solid.shape.facePolygon(static_cast<int>(f)));
+    }
+  }
+  for (const Source& source : scene.sources) {
+    h.add(std::string_view(source.name));
+    h.add(source.luminance);
+    h.add(source.color);
+    for (const ConvexPolygon& face : source.faces) addPolygon(h, face);
+  }
+  for (const std::string& name : outputs.grids) {
+    for (const CalculationGrid& grid : scene.grids) {
+      if (grid.name != name) continue;
+      h.add(std::string_view(grid.name));
+      h.add(grid.spacing);
+      for (std::size_t i = 0; i < grid.positions.size(); ++i) {
+        h.add(grid.positions[i]);
+        h.add(grid.normals[i]);
+      }
+    }
+  }
+  return h.hex();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,38 @@
+#pragma once
+// A study file (docs/sweeps.md): a base scene, the values its parameters take, how the values
+// combine into cases, and what to produce per case. Read by loadStudy (study_reader.hpp).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/yaml_reader.hpp"
+#include "study/study_metrics.hpp"
+
+namespace penumbra {
+
+// grid: every combination of the values (the first parameter varies slowest); zip: the i-th
+// values of every parameter together, so all lists have one length.
+enum class Combination { Grid, Zip };
+
+struct StudyParameter {
+  std::string name;
+  std::vector<double> values;  // in the order given, no repeats
+  scenefile::Where where;      // parameters.<name>
+};
+
+struct Study {
+  std::filesystem::path file;   // the study file as given
+  std::filesystem::path scene;  // the base scene: its path relative to the study's folder, resolved
+  std::string description;
+  std::vector<StudyParameter> parameters;
+  scenefile::Where parametersWhere;
+  Combination combination = Combination::Grid;
+  scenefile::Where combinationWhere;
+  std::vector<std::string> grids;  // the scene's grids to compute; empty: all of them
+  scenefile::Where gridsWhere;
+  std::vector<StudyMetric> metrics;  // table columns and charts; default all
+  bool plots = false;                // per-case plots (what `penumbra grid --plot` draws)
+  bool charts = true;                // a chart of each metric against each varied parameter
+};
+
+}  // namespace penumbra

@@ -1,0 +1,63 @@
+#include "study/study_plan.hpp"
+
+#include <algorithm>
+
+#include "evaluation/scene_evaluation.hpp"
+#include "scene/scene_loader.hpp"
+#include "study/case_fingerprint.hpp"
+#include "study/study_cases.hpp"
+
+namespace penumbra {
+namespace {
+
+void checkGrids(const Study& study, const Scene& scene, const std::string& caseId) {
+  for (const std::string& name : study.grids) {
+    const bool known = std::any_of(scene.grids.begin(), scene.grids.end(),
+                                   [&](const CalculationGrid& g) { return g.name == name; });
+    if (known) continue;
+    std::string names;
+    for (const CalculationGrid& g : scene.grids) names += (names.empty() ? "" : ", ") + g.name;
+    throw SceneError(study.file, study.gridsWhere.line, "grids",
+                     "'" + name + "' is not a grid of " + study.scene.string() + " (" + caseId +
+                         "); it has: " + (names.empty() ? "none" : names));
+  }
+}
+
+}  // namespace
+
+Scene loadCaseScene(const Study& study, const PlannedCase& planned) {
+  try {
+    return loadScene(study.scene, planned.values);
+  } catch (const SceneError& e) {
+    throw SceneError(study.file, study.parametersWhere.line, "parameters",
+                     planned.id + " (" + describeParameters(planned.values) +
+                         ") makes an invalid scene: " + e.what());
+  }
+}
+
+StudyPlan planStudy(const Study& study, const std::string& estimator, bool plots) {
+  StudyPlan plan;
+  plan.study = study;
+  StudyLayout& layout = plan.layout;
+  layout.studyFile = study.file.string();
+  layout.sceneFile = study.scene.string();
+  for (const StudyParameter& p : study.parameters) layout.parameters.push_back(p.name);
+  layout.combination = study.combination;
+  layout.metrics = study.metrics;
+  layout.plots = plots;
+  layout.charts = study.charts;
+  for (const StudyCase& c : studyCases(study)) {
+    PlannedCase planned{c.id, c.values, ""};
+    const Scene scene = loadCaseScene(study, planned);
+    checkGrids(study, scene, c.id);
+    if (layout.cases.empty()) {
+      for (const CalculationGrid* g : selectGrids(scene, study.grids))
+        layout.grids.push_back(g->name);
+    }
+    planned.fingerprint = caseFingerprint(scene, CaseOutputs{layout.grids, estimator, plots});
+    layout.cases.push_back(std::move(planned));
+  }
+  return plan;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,26 @@
+#pragma once
+// A study made ready to run: every case's scene is built once up front, so that a case with an
+// invalid scene stops the sweep before anything is computed or written, and fingerprinted
+// (case_fingerprint.hpp) so that finished cases can be recognised.
+#include <string>
+
+#include "scene/scene.hpp"
+#include "study/study.hpp"
+#include "study/study_layout.hpp"
+
+namespace penumbra {
+
+struct StudyPlan {
+  Study study;
+  StudyLayout layout;
+};
+
+// `estimator` is "kernel" or "reference n=<n>"; `plots` whether per-case plots will be drawn.
+// Throws SceneError: a case whose scene is invalid (naming the case, its values and the scene's
+// file:line:key), or a grid in `grids:` that the scene does not have.
+StudyPlan planStudy(const Study& study, const std::string& estimator, bool plots);
+
+// The scene of one case, with the same error as planStudy.
+Scene loadCaseScene(const Study& study, const PlannedCase& planned);
+
+}  // namespace penumbra

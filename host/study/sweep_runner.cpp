@@ -1,0 +1,204 @@
+#include "study/sweep_runner.hpp"
+
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+#include "evaluation/scene_evaluation.hpp"
+#include "output/staged_directory.hpp"
+#include "study/results_table.hpp"
+#include "study/study_charts.hpp"
+#include "study/study_plan.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+fs::path caseFolder(const fs::path& out, const std::string& id) {
+  return out / kCasesFolder / id;
+}
+
+std::string estimatorIdentity(const EstimatorOptions& options) {
+  return options.reference ? fmt::format("reference n={}", options.referenceN) : "kernel";
+}
+
+void writeLayout(const fs::path& out, const StudyLayout& layout) {
+  writeTextFiles(out, {{kStudyJson, layoutJson(layout).dump(2) + "\n"}});
+}
+
+// The tables (and, once every case is finished, the charts) of the finished cases in `out`.
+TableSummary writeStudyTables(const fs::path& out, const StudyLayout& layout,
+                              const ChartWriter& chartWriter) {
+  TableSummary summary;
+  std::vector<CaseRecord> records;
+  for (const PlannedCase& c : layout.cases) {
+    if (std::optional<CaseRecord> record = readFinishedCase(out, c)) {
+      records.push_back(std::move(*record));
+    } else {
+      summary.missing.push_back(c.id);
+    }
+  }
+  summary.rows = records.size();
+  writeTextFiles(out, {{"results.csv", csvText(resultsTable(layout, records))},
+                       {"design-explorer.csv", csvText(designExplorerTable(layout, records))}});
+  if (!layout.charts) {
+    summary.chartsNote = "the study says charts: false";
+  } else if (!chartWriter) {
+    summary.chartsNote = "this penumbra was built without charts (viz/)";
+  } else if (!summary.missing.empty()) {
+    summary.chartsNote =
+        fmt::format("charts are drawn once all {} cases are finished", layout.cases.size());
+  } else {
+    const std::vector<ChartFile> charts = studyCharts(layout, records);
+    if (charts.empty()) summary.chartsNote = "no parameter takes more than one value";
+    try {
+      if (!charts.empty()) writeCharts(out / "charts", charts, chartWriter);
+      summary.charts = charts.size();
+    } catch (const std::exception& e) {
+      // The tables are written; charts are a view of them and can be drawn again by a rerun.
+      summary.chartsNote = std::string("they could not be drawn: ") + e.what();
+    }
+  }
+  return summary;
+}
+
+// The cases this run computes: the shard's cases that are not finished in `out`.
+std::vector<const PlannedCase*> casesToCompute(const StudyLayout& layout, const Shard& shard,
+                                               const fs::path& out, SweepSummary& summary) {
+  std::vector<const PlannedCase*> todo;
+  for (std::size_t i = 0; i < layout.cases.size(); ++i) {
+    if (!shard.contains(i)) continue;
+    if (readFinishedCase(out, layout.cases[i])) {
+      ++summary.skipped;
+    } else {
+      todo.push_back(&layout.cases[i]);
+    }
+  }
+  return todo;
+}
+
+void checkResume(const SweepSettings& settings, const StudyLayout& layout) {
+  const std::optional<StudyLayout> previous = readLayout(settings.output);
+  if (!settings.resume) return;
+  if (!previous) {
+    throw std::invalid_argument(
+        fmt::format("--resume: {} holds no sweep (no {}); start one without --resume",
+                    settings.output.string(), kStudyJson));
+  }
+  if (!previous->sameStudy(layout)) {
+    throw std::invalid_argument(fmt::format(
+        "--resume: {} holds a sweep of {}, which differs from this one (other values, a changed "
+        "scene, grids or estimator); run without --resume to recompute the cases that changed",
+        settings.output.string(), previous->studyFile));
+  }
+}
+
+}  // namespace
+
+SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepObserver& observer) {
+  const bool plots = study.plots && static_cast<bool>(settings.plots);
+  const StudyPlan plan = planStudy(study, estimatorIdentity(settings.estimator), plots);
+  const StudyLayout& layout = plan.layout;
+  checkOutputTarget(settings.output);
+  checkResume(settings, layout);
+
+  SweepSummary summary;
+  summary.cases = layout.cases.size();
+  if (study.plots && !plots) {
+    summary.plotsNote =
+        "per-case plots were asked for, but this penumbra cannot draw them in a "
+        "sweep yet";
+  }
+  writeLayout(settings.output, layout);
+  const std::vector<const PlannedCase*> todo =
+      casesToCompute(layout, settings.shard, settings.output, summary);
+
+  std::unique_ptr<Scene> scene;
+  std::unique_ptr<Estimator> estimator;
+  if (!todo.empty()) {
+    scene = std::make_unique<Scene>(loadCaseScene(study, *todo.front()));
+    estimator = std::make_unique<Estimator>(settings.estimator, *scene);
+    summary.device = estimator->device();
+  }
+  observer.planned(todo.size(), summary.skipped);
+  for (const PlannedCase* c : todo) {
+    observer.caseStarted(*c);
+    const auto start = Clock::now();
+    if (c != todo.front()) {
+      // The new scene is uploaded to the device already holding the program; the old one goes.
+      auto next = std::make_unique<Scene>(loadCaseScene(study, *c));
+      estimator->setScene(*next);
+      scene = std::move(next);
+    }
+    RunReport report;
+    report.version = settings.version;
+    report.sceneFile = study.scene;
+    report.parameters = scene->parameters;
+    report.estimator = estimator->name();
+    report.referenceN = estimator->referenceN();
+    report.device = estimator->device();
+    report.grids = evaluateGrids(*scene, selectGrids(*scene, layout.grids), *estimator);
+    report.totalSeconds = secondsSince(start);
+
+    CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
+    for (const GridReport& g : report.grids) record.grids.push_back({g.name, g.metrics});
+    const bool stale = fs::exists(caseFolder(settings.output, c->id));
+    writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record),
+                    plots ? settings.plots : CasePlotWriter{});
+    ++summary.computed;
+    if (stale) ++summary.recomputed;
+    observer.caseFinished(record, secondsSince(start));
+  }
+  summary.table = writeStudyTables(settings.output, layout, settings.charts);
+  return summary;
+}
+
+TableSummary mergeSweeps(const std::vector<fs::path>& inputs, const fs::path& output,
+                         const ChartWriter& charts) {
+  if (inputs.empty()) throw std::invalid_argument("merge: name the sweep folders to join");
+  std::vector<StudyLayout> layouts;
+  for (const fs::path& in : inputs) {
+    std::optional<StudyLayout> layout = readLayout(in);
+    if (!layout) {
+      throw std::invalid_argument(
+          fmt::format("{} is not the output folder of `penumbra sweep` (it has no {})", in.string(),
+                      kStudyJson));
+    }
+    if (!layouts.empty() && !layouts.front().sameStudy(*layout)) {
+      throw std::invalid_argument(fmt::format(
+          "{} and {} hold different sweeps (other values, scenes, grids or estimators); merge "
+          "only the shards of one study",
+          inputs.front().string(), in.string()));
+    }
+    layouts.push_back(std::move(*layout));
+  }
+  const StudyLayout& layout = layouts.front();
+  checkOutputTarget(output);
+  if (const std::optional<StudyLayout> existing = readLayout(output);
+      existing && !existing->sameStudy(layout)) {
+    throw std::invalid_argument(
+        fmt::format("{} already holds another sweep ({}); merge into a new folder", output.string(),
+                    existing->studyFile));
+  }
+  writeLayout(output, layout);
+  const fs::path target = normalizedTarget(output);
+  for (const PlannedCase& c : layout.cases) {
+    if (readFinishedCase(output, c)) continue;
+    for (const fs::path& in : inputs) {
+      if (normalizedTarget(in) == target || !readFinishedCase(in, c)) continue;
+      copyCaseFolder(caseFolder(in, c.id), caseFolder(output, c.id));
+      break;
+    }
+  }
+  return writeStudyTables(output, layout, charts);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,124 @@
+// Reading a grid run back (output/result_reader.hpp) and the layout summary.json records for it.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "lighting/grid_metrics.hpp"
+#include "output/result_files.hpp"
+#include "output/result_reader.hpp"
+#include "test_files.hpp"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+using penumbra::testing::TempDir;
+
+// A 3 × 2 work plane with awkward doubles and a point inside a solid, and a point list whose
+// `inside` names need CSV quoting.
+RunReport awkwardRun() {
+  RunReport run;
+  run.version = "test";
+  run.sceneFile = "scenes/office.yaml";
+  run.estimator = "kernel";
+  GridReport plane;
+  plane.name = "work plane";
+  plane.kind = GridKind::WorkPlane;
+  plane.columns = 3;
+  plane.rows = 2;
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 3; ++c) {
+      plane.points.push_back({Vec3(0.1 + 0.2 * c, 1.0 / 3.0 + 0.3 * r, 0.8), Vec3::UnitZ(), -1});
+      plane.illuminance.push_back(c == 1 && r == 1 ? 0.0 : 1e3 / 7.0 * (c + 1) + 1e-300 * r);
+      plane.insideSolids.push_back(c == 1 && r == 1 ? "cabinet" : "");
+    }
+  }
+  plane.metrics = gridMetrics(plane.illuminance, std::vector<int>{-1, -1, -1, -1, 0, -1}, 0.3);
+  GridReport sensors;
+  sensors.name = "sensors";
+  sensors.points = {{Vec3(1, 2, 3), Vec3(0, -0.6, 0.8), -1},
+                    {Vec3(-1e-7, 2, 3), Vec3::UnitX(), -1}};
+  sensors.illuminance = {0.1 + 0.2, 2.5e-5};
+  sensors.insideSolids = {"desk, \"left\"", ""};
+  sensors.metrics = gridMetrics(sensors.illuminance, std::vector<int>{0, -1}, 0.0);
+  run.grids = {plane, sensors};
+  return run;
+}
+
+TEST(ResultReader, ReadsBackExactlyWhatWasWritten) {
+  TempDir dir("result-reader");
+  const RunReport written = awkwardRun();
+  writeResults(written, dir.path());
+  const RunReport read = readResults(dir.path());
+  EXPECT_EQ(read.sceneFile, fs::absolute("scenes/office.yaml").lexically_normal());
+  ASSERT_EQ(read.grids.size(), 2u);
+  for (std::size_t g = 0; g < 2; ++g) {
+    const GridReport& a = written.grids[g];
+    const GridReport& b = read.grids[g];
+    EXPECT_EQ(b.name, a.name);
+    EXPECT_EQ(b.kind, a.kind);
+    EXPECT_EQ(b.columns, a.columns);
+    EXPECT_EQ(b.rows, a.rows);
+    ASSERT_EQ(b.points.size(), a.points.size());
+    for (std::size_t i = 0; i < a.points.size(); ++i) {
+      EXPECT_EQ(b.points[i].position, a.points[i].position);
+      EXPECT_EQ(b.points[i].normal, a.points[i].normal);
+      EXPECT_EQ(b.illuminance[i], a.illuminance[i]);
+      EXPECT_EQ(b.insideSolids[i], a.insideSolids[i]);
+    }
+    EXPECT_EQ(b.metrics.eAvg, a.metrics.eAvg);
+    EXPECT_EQ(b.metrics.eMin, a.metrics.eMin);
+    EXPECT_EQ(b.metrics.pointsInsideSolids, a.metrics.pointsInsideSolids);
+    EXPECT_EQ(b.metrics.spacing, a.metrics.spacing);
+  }
+}
+
+TEST(ResultReader, SummaryRecordsTheLayoutAndTheAbsoluteScene) {
+  const nlohmann::json summary = summaryJson(awkwardRun());
+  EXPECT_EQ(summary["scene"], "scenes/office.yaml");
+  EXPECT_EQ(summary["scene_absolute"],
+            fs::absolute("scenes/office.yaml").lexically_normal().string());
+  const auto& plane = summary["grids"][0];
+  EXPECT_EQ(plane["kind"], "work-plane");
+  EXPECT_EQ(plane["columns"], 3);
+  EXPECT_EQ(plane["rows"], 2);
+  const auto& sensors = summary["grids"][1];
+  EXPECT_EQ(sensors["kind"], "points");
+  EXPECT_TRUE(sensors["columns"].is_null());
+  EXPECT_TRUE(sensors["rows"].is_null());
+  EXPECT_EQ(gridKindFromName("rect"), GridKind::Rect);
+  EXPECT_THROW(gridKindFromName("plane"), std::runtime_error);
+}
+
+std::string errorOf(const fs::path& dir) {
+  try {
+    readResults(dir);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ResultReader, MissingOrMalformedFilesAreNamed) {
+  TempDir dir("result-reader");
+  EXPECT_NE(errorOf(dir.path()).find("summary.json"), std::string::npos);
+
+  writeResults(awkwardRun(), dir.path());
+  std::ofstream(dir.path() / "sensors.csv") << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n1,2,3,0,0,1,x,\n";
+  EXPECT_NE(errorOf(dir.path()).find("sensors.csv:2: 'x' is not a number"), std::string::npos)
+      << errorOf(dir.path());
+
+  std::ofstream(dir.path() / "sensors.csv") << "x,y\n";
+  EXPECT_NE(errorOf(dir.path()).find("sensors.csv:1"), std::string::npos);
+
+  std::ofstream(dir.path() / "sensors.csv") << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n1,2,3,0,0,1,5,\n";
+  EXPECT_NE(errorOf(dir.path()).find("1 rows, but summary.json says 2 points"), std::string::npos)
+      << errorOf(dir.path());
+}
+
+}  // namespace
+}  // namespace penumbra

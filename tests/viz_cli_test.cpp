@@ -1,0 +1,143 @@
+// `penumbra plot` and `penumbra grid --plot` as a user runs them (under xvfb-run): the files,
+// the exit codes, and nothing written when anything fails.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+
+#include <nlohmann/json.hpp>
+
+#include "test_files.hpp"
+#include "viz_test_support.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using penumbra::testing::readText;
+using penumbra::testing::TempDir;
+
+struct Outcome {
+  int status = -1;
+  std::string err;
+};
+
+// `environment` is prepended to the command (e.g. "env -u DISPLAY").
+Outcome penumbra(const fs::path& dir, const std::string& arguments,
+                 const std::string& environment = "") {
+  const fs::path err = dir / "stderr.txt";
+  const std::string command = "cd '" + dir.string() + "' && " + environment +
+                              " '" PENUMBRA_BINARY "' " + arguments + " > /dev/null 2> '" +
+                              err.string() + "' < /dev/null";
+  const int raw = std::system(command.c_str());
+  Outcome r{WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readText(err)};
+  fs::remove(err);
+  return r;
+}
+
+std::set<std::string> filesIn(const fs::path& dir) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(dir)) names.insert(entry.path().filename());
+  return names;
+}
+
+// The room of viz_test_support with a work plane (plotted) and two sensors (a point list).
+std::string sceneWithGrids(const std::string& planeName = "work-plane") {
+  return std::string(penumbra::testing::kRoomScene) + "grids:\n  - {name: " + planeName +
+         ", height: 0.8, spacing: 0.5}\n  - {name: sensors, points: [[1, 1, 0.8, 0, 0, 1], "
+         "[2, 2, 0.8, 0, 0, 1]]}\n";
+}
+
+TEST(PlotCli, GridWithPlotWritesEveryPicture) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
+  const Outcome run = penumbra(dir.path(), "grid room.yaml -o out --plot --width 800 -q");
+  ASSERT_EQ(run.status, 0) << run.err;
+  const std::set<std::string> expected{
+      "work-plane.csv", "work-plane.res", "sensors.csv", "sensors.res",  "summary.json",
+      "work-plane.png", "work-plane.vti", "sensors.vtp", "surfaces.vtp", "surfaces.png"};
+  EXPECT_EQ(filesIn(dir.path() / "out"), expected);
+  const penumbra::testing::Png png(dir.path() / "out" / "work-plane.png");
+  EXPECT_EQ(png.width(), 800);
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  EXPECT_EQ(summary["grids"][0]["kind"], "work-plane");
+  EXPECT_EQ(summary["scene_absolute"], (dir.path() / "room.yaml").string());
+}
+
+TEST(PlotCli, PlotRedrawsAFinishedRunFromAnotherDirectory) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
+  ASSERT_EQ(penumbra(dir.path(), "grid room.yaml -o out -q").status, 0);
+  fs::create_directories(dir.path() / "elsewhere");
+  const Outcome run = penumbra(dir.path() / "elsewhere",
+                               "plot ../out --range 100:1000 --log --isolux 100,300 --palette "
+                               "falsecolor --width 600 -q");
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "out" / "surfaces.png"));
+  EXPECT_EQ(penumbra::testing::Png(dir.path() / "out" / "surfaces.png").width(), 600);
+}
+
+TEST(PlotCli, WithoutADisplayItSaysHowAndWritesNothing) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
+  ASSERT_EQ(penumbra(dir.path(), "grid room.yaml -o out -q").status, 0);
+  const auto before = filesIn(dir.path() / "out");
+  const Outcome run = penumbra(dir.path(), "plot out", "env -u DISPLAY");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.err.find("xvfb-run"), std::string::npos) << run.err;
+  EXPECT_EQ(filesIn(dir.path() / "out"), before);
+}
+
+TEST(PlotCli, ABrokenGridFileLeavesNoPictureBehind) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
+  ASSERT_EQ(penumbra(dir.path(), "grid room.yaml -o out -q").status, 0);
+  // The second grid's CSV is cut short: the first grid would plot, but nothing may appear.
+  std::ofstream(dir.path() / "out" / "sensors.csv") << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n1,1\n";
+  const auto before = filesIn(dir.path() / "out");
+  const Outcome run = penumbra(dir.path(), "plot out");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.err.find("sensors.csv:2"), std::string::npos) << run.err;
+  EXPECT_EQ(filesIn(dir.path() / "out"), before);
+}
+
+TEST(PlotCli, AGridNamedSurfacesIsRefused) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids("surfaces");
+  const Outcome run = penumbra(dir.path(), "grid room.yaml -o out --plot -q");
+  EXPECT_EQ(run.status, 1);
+  EXPECT_NE(run.err.find("surfaces.png"), std::string::npos) << run.err;
+  EXPECT_FALSE(fs::exists(dir.path() / "out" / "surfaces.png"));
+}
+
+TEST(PlotCli, UsageErrors) {
+  TempDir dir("viz-cli");
+  EXPECT_EQ(penumbra(dir.path(), "plot").status, 1);                      // no folder
+  EXPECT_EQ(penumbra(dir.path(), "plot missing-folder").status, 1);       // not there
+  EXPECT_EQ(penumbra(dir.path(), "plot . --range 5:1").status, 1);        // max below min
+  EXPECT_EQ(penumbra(dir.path(), "plot . --isolux 100,abc").status, 1);   // not a number
+  EXPECT_EQ(penumbra(dir.path(), "plot . --palette jet").status, 1);      // unknown palette
+  EXPECT_EQ(penumbra(dir.path(), "grid x.yaml -o out --log").status, 1);  // needs --plot
+  const Outcome noRun = penumbra(dir.path(), "plot .");                   // no summary.json
+  EXPECT_EQ(noRun.status, 1);
+  EXPECT_NE(noRun.err.find("summary.json"), std::string::npos) << noRun.err;
+}
+
+TEST(PlotCli, HelpNamesTheOutputsAndUnits) {
+  TempDir dir("viz-cli");
+  const std::string command = "'" PENUMBRA_BINARY "' plot --help";
+  FILE* pipe = popen(command.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string help;
+  char buffer[4096];
+  while (std::size_t n = fread(buffer, 1, sizeof buffer, pipe)) help.append(buffer, n);
+  EXPECT_EQ(pclose(pipe), 0);
+  for (const char* words :
+       {"<grid>.png", "<grid>.vti", "surfaces.vtp", "surfaces.png", "lx", "--range", "--log",
+        "--isolux", "--palette", "--width", "--surface-spacing", "xvfb-run"}) {
+    EXPECT_NE(help.find(words), std::string::npos) << words;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,42 @@
+#pragma once
+// The heat map of a planar grid: illuminance in false colour over the calculation area, isolux
+// lines with their values, the room outline and the solids the plane cuts, Emin and Emax
+// marked, the metrics in the title and a legend with units.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <Eigen/Core>
+
+#include "lighting/grid_metrics.hpp"
+#include "scene/scene.hpp"
+#include "viz/colour_legend.hpp"
+#include "viz/colour_scale.hpp"
+#include "viz/planar_field.hpp"
+#include "viz/plot_layout.hpp"
+
+namespace penumbra::viz {
+
+struct HeatMapStyle {
+  ColourScale scale;
+  std::vector<double> isolux;  // lx; empty: no lines
+  int width = 1600;            // px
+  std::string subtitle;        // the line under the metrics (scene, spacing, plane)
+};
+
+// What was drawn where, for tests and for the caller's messages.
+struct HeatMapFigure {
+  PlotLayout layout;
+  Eigen::Vector2d eMaxAt{0, 0}, eMinAt{0, 0};  // plot coordinates (m) of the marked points
+  vtkSmartPointer<vtkPolyData> isolux;         // the lines, in plot coordinates
+  LegendPlacement legend;                      // where the colour bar is, px
+};
+
+// Renders the heat map to `png` (needs a display, see render_png.hpp). `scene` gives the
+// outline and the sections; `metrics` the title line.
+HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, const Scene& scene,
+                          const HeatMapStyle& style, const std::filesystem::path& png);
+
+}  // namespace penumbra::viz
