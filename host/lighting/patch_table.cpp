@@ -75,14 +75,14 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
       const EmittingFaceShadows& face = shadows.faces[f];
       std::vector<int> all(face.casters.size());
       for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-      const std::vector<int> near = candidatesForBox(shadows, face, groupBox, all, margin);
+      const std::vector<int> near = candidatesForBox(face, groupBox, all, margin);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
         const FaceClass c = patchClass(points, w * PN_LANES, face);
         entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
         if (c == FaceClass::C) continue;
         const BoundingBox box = boxOf(points, w * PN_LANES, PN_LANES);
-        for (int k : candidatesForBox(shadows, face, box, near, margin))
+        for (int k : candidatesForBox(face, box, near, margin))
           list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
       }

@@ -16,18 +16,12 @@ std::vector<int> candidatesForFace(const EmittingFaceShadows& face, const Convex
   return found;
 }
 
-std::vector<int> candidatesForBox(const SceneShadows& shadows, const EmittingFaceShadows& face,
-                                  const BoundingBox& box, std::span<const int> among,
-                                  double margin) {
+std::vector<int> candidatesForBox(const EmittingFaceShadows& face, const BoundingBox& box,
+                                  std::span<const int> among, double margin) {
   const Vec3 centre = 0.5 * (box.lo + box.hi);
   const Vec3 half = 0.5 * (box.hi - box.lo);
-  // Any point of a volume within `margin` of the box lies in the grown box; when that is inside
-  // the bounds, it lies in the caster's reach.
-  const BoundingBox grown = box.grown(margin);
-  const bool withinReach = shadows.bounds.contains(grown);
   std::vector<int> found;
   for (int k : among) {
-    if (withinReach && !face.casters[k].reach.overlaps(grown)) continue;
     bool meets = true;
     for (const Plane& plane : face.casters[k].volume.penumbra) {
       // The box corner deepest inside the half-space.

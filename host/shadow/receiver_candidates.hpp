@@ -17,10 +17,8 @@ std::vector<int> candidatesForFace(const EmittingFaceShadows& face, const Convex
 
 // The casters among `among` (indices into face.casters) whose grown penumbra volume may meet the
 // box: none of its planes has the whole box outside. Conservative: near a volume's edges a box
-// may be kept that misses it. Boxes inside `shadows.bounds` are first tested against each
-// caster's reach (a cheap box test that rejects most casters).
-std::vector<int> candidatesForBox(const SceneShadows& shadows, const EmittingFaceShadows& face,
-                                  const BoundingBox& box, std::span<const int> among,
-                                  double margin);
+// may be kept that misses it.
+std::vector<int> candidatesForBox(const EmittingFaceShadows& face, const BoundingBox& box,
+                                  std::span<const int> among, double margin);
 
 }  // namespace penumbra

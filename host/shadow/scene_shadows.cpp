@@ -11,15 +11,6 @@ SceneShadows buildSceneShadows(const Scene& scene) {
     for (const ConvexPolygon& face : scene.sources[s].faces)
       shadows.faces.push_back(EmittingFaceShadows{static_cast<int>(s), face, {}});
 
-  BoundingBox extent;
-  for (const Solid& solid : scene.solids)
-    for (const Vec3& v : solid.shape.vertices()) extent.add(v);
-  for (const EmittingFaceShadows& f : shadows.faces)
-    for (const Vec3& v : f.face.vertices()) extent.add(v);
-  if (extent.empty()) extent.add(Vec3::Zero());
-  shadows.bounds = extent.grown(std::max(scene.size(), 1.0));
-  const ConvexPolyhedron boundsShape = ConvexPolyhedron::box(shadows.bounds.lo, shadows.bounds.hi);
-
   // Every (face, solid) pair is independent: build them in parallel, then drop the empty ones
   // in order, so the result does not depend on the thread count.
   const std::size_t solids = scene.solids.size();
@@ -30,19 +21,8 @@ SceneShadows buildSceneShadows(const Scene& scene) {
     caster.solid = static_cast<int>(k % solids);
     caster.shape = scene.solids[caster.solid].shape.clipped(f.face.plane().flipped(),
                                                             shadows.tolerance.length);
-    if (caster.shape.empty()) return;
-    caster.volume = shadowVolume(f.face, caster.shape, shadows.tolerance);
-    ConvexPolyhedron within = boundsShape;
-    const double tol = shadows.tolerance.length;
-    for (const Plane& plane : caster.volume.penumbra) {
-      // Grown by the tolerance the clip itself uses, so that rounding never trims the volume.
-      within = within.clipped(Plane{plane.normal, plane.offset + 2.0 * tol}, tol);
-      if (within.empty()) break;
-    }
-    // A volume thinner than the clip can keep (an occluder flat against the source) reaches
-    // at least the occluder itself.
-    for (const Vec3& v : within.empty() ? caster.shape.vertices() : within.vertices())
-      caster.reach.add(v);
+    if (!caster.shape.empty())
+      caster.volume = shadowVolume(f.face, caster.shape, shadows.tolerance);
   });
   for (std::size_t k = 0; k < all.size(); ++k)
     if (!all[k].shape.empty()) shadows.faces[k / solids].casters.push_back(std::move(all[k]));

@@ -6,7 +6,6 @@
 // A polyhedron source is handled face by face (the kernel integrates it so; docs/method.md).
 #include <vector>
 
-#include "geometry/bounding_box.hpp"
 #include "geometry/tolerance.hpp"
 #include "scene/scene.hpp"
 #include "shadow/shadow_volume.hpp"
@@ -17,7 +16,6 @@ struct ShadowCaster {
   int solid = -1;          // index into Scene::solids
   ConvexPolyhedron shape;  // the solid clipped to the face's front half-space
   ShadowVolume volume;
-  BoundingBox reach;  // the part of the penumbra volume within SceneShadows::bounds
 };
 
 struct EmittingFaceShadows {
@@ -28,9 +26,6 @@ struct EmittingFaceShadows {
 
 struct SceneShadows {
   Tolerance tolerance;
-  // The scene's solids and sources, grown by the scene's size on every side: casters' reach is
-  // measured within it (penumbra volumes are unbounded), so it only speaks for points inside.
-  BoundingBox bounds;
   std::vector<EmittingFaceShadows> faces;  // every face of every source, in scene order
 };
 
