@@ -324,7 +324,7 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
     float t0 = 0.0f, t1 = 1.0f;
     bool covers = true;
     for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
-      float3 m = st->cm[e]; /* inside the occluder's cone: m·x > 0 */
+      float3 m = st->cm[e];      /* inside the occluder's cone: m·x > 0 */
       if (no_plane(m)) continue; /* P on the edge's line */
       float f0 = dot(m, a), f1 = dot(m, b);
       if (in_plane(f0, f1, la, lb)) {
@@ -370,7 +370,8 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
   }
 
   float sum = 0.0f;
-  for (int k = 0; k < pieces; ++k) sum += edge_term(edge_point(a, b, lo[k]), edge_point(a, b, hi[k]), n);
+  for (int k = 0; k < pieces; ++k)
+    sum += edge_term(edge_point(a, b, lo[k]), edge_point(a, b, hi[k]), n);
   return sum;
 }
 
@@ -445,7 +446,8 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     st.first_contour[st.na] = c;
   }
 
-  for (int i = 0; i < st.ns; ++i) st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+  for (int i = 0; i < st.ns; ++i)
+    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
   float sum = 0.0f;
   for (int i = 0; i < st.ns; ++i)
     sum += visible_edge_term(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1], -1, n, &st, error);
@@ -544,8 +546,8 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
     if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
       float8 e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
       int8 facing = e_face > 0.0f;
-      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes,
-                                    occluders, planes, eps_length);
+      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, occluders,
+                                    planes, eps_length);
       e_face = select(e_face, (float8)(0.0f), t.umbra);
       if (any(t.shaded)) {
         float lane_e[PN_LANES];
@@ -556,9 +558,8 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
           if (!lane_shaded[l]) continue;
           float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
           float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
-          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes,
-                                    vertices, occluders, planes, edges, overts, eps_length,
-                                    &error);
+          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes, vertices,
+                                    occluders, planes, edges, overts, eps_length, &error);
         }
         e_face = vload8(0, lane_e);
       }
