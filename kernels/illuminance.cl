@@ -434,7 +434,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
       float3 ea, eb;
       if (!contour_edge(e, o, front, p, edges, overts, &ea, &eb)) continue;
       if (c == PN_MAX_CONTOUR_EDGES) {
-        *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
+        *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
         break;
       }
       st.ca[c] = ea;

@@ -28,6 +28,7 @@ typedef cl_int4 pn_int4;
 #define PN_ERROR_TOO_MANY_OCCLUDERS 1
 #define PN_ERROR_TOO_MANY_PIECES 2
 #define PN_ERROR_TOO_MANY_CONTACTS 4
+#define PN_ERROR_TOO_MANY_CONTOUR_EDGES 8
 
 /* One emitting convex polygon: a polygon source, or one face of a polyhedron source. Its
  * vertices run counter-clockwise about the emission direction. */

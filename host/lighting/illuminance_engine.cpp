@@ -63,6 +63,9 @@ std::string kernelError(int bits, const SamplePoint& p) {
       p.position.x(), p.position.y(), p.position.z(),
       (bits & PN_ERROR_TOO_MANY_OCCLUDERS)
           ? fmt::format("more than {} occluders shade it", PN_MAX_ACTIVE_OCCLUDERS)
+      : (bits & PN_ERROR_TOO_MANY_CONTOUR_EDGES)
+          ? fmt::format("its shading occluders have more than {} contour edges in all",
+                        PN_MAX_CONTOUR_EDGES)
       : (bits & PN_ERROR_TOO_MANY_CONTACTS)
           ? fmt::format("it touches more than {} solids", PN_MAX_CONTACTS)
           : fmt::format("more than {} visible pieces on one edge", PN_MAX_VISIBLE_PIECES));
