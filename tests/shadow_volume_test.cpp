@@ -219,6 +219,29 @@ void printTally(const char* what, const OracleTally& t) {
 constexpr double kMargin = 1e-9 * 10.0;
 constexpr double kClear = 1e-7;
 
+// One (source, occluder) pair: builds the volumes and checks 50 probe points, skipping those the
+// source cannot light (`unlit`).
+template <class Unlit>
+void checkPair(RandomScenes& random, const Vec3& centre, const auto& source,
+               const std::vector<Vec3>& samples, const ConvexPolyhedron& occluder,
+               const Tolerance& tolerance, Unlit unlit, OracleTally& tally) {
+  const ShadowVolume volume = shadowVolume(source, occluder, tolerance);
+  ASSERT_FALSE(volume.penumbra.empty());
+  if (volume.umbra.empty()) ++tally.degeneratePairs;
+  for (const Vec3& p : probePoints(random, centre, occluder.centroid(), volume, 50)) {
+    if (unlit(p)) continue;
+    checkPoint(p, source.vertices(), samples, occluder, volume, kMargin, kClear, tally);
+  }
+}
+
+void expectOracleAgrees(const OracleTally& tally, long points, long mustShade, long umbra) {
+  EXPECT_GE(tally.points, points);
+  EXPECT_GT(tally.mustShade, mustShade);
+  EXPECT_EQ(tally.missed, 0);
+  EXPECT_GT(tally.calledUmbra, umbra);
+  EXPECT_EQ(tally.wrongUmbra, 0);
+}
+
 TEST(ShadowVolume, AreaSourcesAgainstTheOracle) {
   RandomScenes random(20261123);
   const Tolerance tolerance{kMargin};
@@ -249,21 +272,13 @@ TEST(ShadowVolume, AreaSourcesAgainstTheOracle) {
       EXPECT_TRUE(shadowVolume(source, occluder, tolerance).penumbra.empty());
       continue;
     }
-    const ShadowVolume volume = shadowVolume(source, occluder, tolerance);
-    ASSERT_FALSE(volume.penumbra.empty());
-    if (volume.umbra.empty()) ++tally.degeneratePairs;
-    const std::vector<Vec3> samples = sourceSamples({source});
-    for (const Vec3& p : probePoints(random, centre, occluder.centroid(), volume, 50)) {
-      if (source.plane().signedDistance(p) <= kClear) continue;  // behind: no light to block
-      checkPoint(p, source.vertices(), samples, occluder, volume, kMargin, kClear, tally);
-    }
+    // Points behind the source get no light to block.
+    checkPair(
+        random, centre, source, sourceSamples({source}), occluder, tolerance,
+        [&](const Vec3& p) { return source.plane().signedDistance(p) <= kClear; }, tally);
   }
   printTally("area sources", tally);
-  EXPECT_GE(tally.points, 50000);
-  EXPECT_GT(tally.mustShade, 10000);
-  EXPECT_EQ(tally.missed, 0);
-  EXPECT_GT(tally.calledUmbra, 1000);
-  EXPECT_EQ(tally.wrongUmbra, 0);
+  expectOracleAgrees(tally, 50000, 10000, 1000);
 }
 
 TEST(ShadowVolume, PolyhedronSourcesAgainstTheOracle) {
@@ -278,27 +293,19 @@ TEST(ShadowVolume, PolyhedronSourcesAgainstTheOracle) {
     const Vec3 at = centre + random.uniform(0.8, 3.0) * random.direction();
     const ConvexPolyhedron occluder = random.solid(at, random.rotation(), random.chance(0.1));
     if (occluder.empty() || separation(source, occluder) <= 1e-6) continue;
-    const ShadowVolume volume = shadowVolume(source, occluder, tolerance);
-    ASSERT_FALSE(volume.penumbra.empty());
-    if (volume.umbra.empty()) ++tally.degeneratePairs;
     std::vector<ConvexPolygon> faces;
     for (int f = 0; f < static_cast<int>(source.faces().size()); ++f)
       faces.push_back(source.facePolygon(f));
-    const std::vector<Vec3> samples = sourceSamples(faces);
-    for (const Vec3& p : probePoints(random, centre, occluder.centroid(), volume, 50)) {
-      const bool onOrInSource =
-          std::all_of(source.faces().begin(), source.faces().end(),
-                      [&](const auto& f) { return f.plane.signedDistance(p) <= kClear; });
-      if (onOrInSource) continue;
-      checkPoint(p, source.vertices(), samples, occluder, volume, kMargin, kClear, tally);
-    }
+    // Points on or in the source are not lit by it.
+    const auto onOrInSource = [&](const Vec3& p) {
+      return std::all_of(source.faces().begin(), source.faces().end(),
+                         [&](const auto& f) { return f.plane.signedDistance(p) <= kClear; });
+    };
+    checkPair(random, centre, source, sourceSamples(faces), occluder, tolerance, onOrInSource,
+              tally);
   }
   printTally("polyhedron sources", tally);
-  EXPECT_GE(tally.points, 40000);
-  EXPECT_GT(tally.mustShade, 5000);
-  EXPECT_EQ(tally.missed, 0);
-  EXPECT_GT(tally.calledUmbra, 500);
-  EXPECT_EQ(tally.wrongUmbra, 0);
+  expectOracleAgrees(tally, 40000, 5000, 500);
 }
 
 // A window in a wall: the wall's pieces beside the opening touch the source along its edges.
