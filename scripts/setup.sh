@@ -16,6 +16,7 @@ PACKAGES=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
   libgtest-dev libbenchmark-dev
   libvtk9-dev xvfb xauth libmuparser-dev fonts-dejavu-core
+  libopenimageio-dev openimageio-tools
 )
 
 # The step `example` runs: the example office's window-width study, a sweep of 21 cases. Its
