@@ -520,8 +520,8 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
                           __global const int4* edges, __global const float4* overts,
                           const float eps_length, __global const PnPatchFace* patch_faces,
                           __global const int* candidates, const int use_volumes,
-                          __global float* out, __global int* errors, __global uchar* classes,
-                          const int class_stride) {
+                          const int per_source, __global float* out, __global int* errors,
+                          __global uchar* classes, const int class_stride) {
   const size_t g = get_global_id(0);
   float8 px = vload8(g, px_), py = vload8(g, py_), pz = vload8(g, pz_);
   float8 nx = vload8(g, nx_), ny = vload8(g, ny_), nz = vload8(g, nz_);
@@ -537,7 +537,8 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
   vstore8(nz, 0, lane_nz);
   vstore8(own, 0, lane_own);
 
-  float8 e_total = 0.0f;
+  /* per_source: out holds E per source ([source][padded point], like classes); else the sum. */
+  float8 e_total = 0.0f, e_source = 0.0f;
   int8 reaches = 0, blocked = 0; /* per source, reset after its last face */
   int error = 0;
   for (int f = 0; f < face_count; ++f) {
@@ -563,17 +564,20 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
         }
         e_face = vload8(0, lane_e);
       }
-      e_total += face.halfLuminance * e_face;
+      e_source += face.halfLuminance * e_face;
       reaches |= facing & ~t.umbra;
       blocked |= facing & (t.shaded | t.umbra);
     }
     if (f + 1 == face_count || faces[f + 1].source != face.source) {
       int8 cls = (reaches & 1) | ((blocked & 1) << 1);
       vstore8(convert_uchar8(cls), 0, classes + (size_t)face.source * class_stride + g * PN_LANES);
+      if (per_source) vstore8(e_source, 0, out + (size_t)face.source * class_stride + g * PN_LANES);
+      e_total += e_source;
+      e_source = 0.0f;
       reaches = 0;
       blocked = 0;
     }
   }
-  vstore8(e_total, g, out);
+  if (!per_source) vstore8(e_total, g, out);
   errors[g] = error;
 }

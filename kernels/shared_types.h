@@ -72,4 +72,18 @@ typedef struct {
 #define PN_CLASS_B 1 /* some point's horizon may cut the face */
 #define PN_CLASS_C 2 /* no point of the patch receives anything from the face */
 
+/* Something a camera ray can hit (kernels/visibility.cl). A solid is the intersection of its
+ * planes' closed insides (n·x <= w), plane i being face i, whose face id is firstFaceId + i. A
+ * polygon (an area source) is its first plane, the emitting side facing +n, cut by the
+ * following side planes; it is seen from its emitting side only and has one face id. */
+typedef struct {
+  pn_int firstPlane, planeCount;
+  pn_int firstFaceId;
+  pn_int kind; /* PN_VISIBLE_* */
+} PnVisibleObject;
+
+#define PN_VISIBLE_SOLID 0
+#define PN_VISIBLE_POLYGON 1
+#define PN_VISIBILITY_TILE 16 /* screen tiles are 16 × 16 samples */
+
 #endif

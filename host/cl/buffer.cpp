@@ -120,6 +120,11 @@ KernelLaunch& KernelLaunch::arg(unsigned index, float value) {
   return *this;
 }
 
+KernelLaunch& KernelLaunch::arg(unsigned index, const std::array<float, 4>& value) {
+  impl_->kernel.setArg(index, cl_float4{{value[0], value[1], value[2], value[3]}});
+  return *this;
+}
+
 void KernelLaunch::run(std::size_t globalSize, std::size_t localSize) {
   if (globalSize == 0) return;
   try {

@@ -1,5 +1,6 @@
 #pragma once
 // Device memory and kernel launches without OpenCL types (only host/cl sees <CL/opencl.hpp>).
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -56,6 +57,7 @@ class KernelLaunch {
   KernelLaunch& arg(unsigned index, const DeviceBuffer& buffer);
   KernelLaunch& arg(unsigned index, int value);
   KernelLaunch& arg(unsigned index, float value);
+  KernelLaunch& arg(unsigned index, const std::array<float, 4>& value);  // a float4
   // Enqueues over `globalSize` work-items in work-groups of `localSize` (globalSize must be a
   // multiple of it) and waits for completion. A fixed work-group size matters on PoCL, which
   // compiles a specialised kernel for every new (global, local) shape it is handed: letting it

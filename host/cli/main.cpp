@@ -5,6 +5,8 @@
 #include "cli/grid_command.hpp"
 #include "cli/help_text.hpp"
 #include "cli/option_checks.hpp"
+#include "cli/render_command.hpp"
+#include "cli/render_options.hpp"
 #include "cli/sweep_options.hpp"
 #include "cli/version.hpp"
 #include "viz/line_chart_writer.hpp"
@@ -46,6 +48,12 @@ int main(int argc, char** argv) {
   penumbra::viz::PlotOptions gridPlot;
   penumbra::viz::addPlotFlag(*gridCommand, plotAfterGrid, gridPlot);
 
+  penumbra::RenderCommandOptions render;
+  std::vector<std::string> renderSettings;
+  bool renderNoCulling = false;
+  CLI::App* renderCommand =
+      penumbra::cli::addRenderCommand(app, render, renderSettings, renderNoCulling);
+
   penumbra::SweepOptions sweep;
   CLI::App* sweepCommand = penumbra::cli::addSweepCommand(app, sweep);
   penumbra::MergeOptions merge;
@@ -80,6 +88,11 @@ int main(int argc, char** argv) {
     gridPlot.device = grid.device;
     gridPlot.quiet = grid.quiet;
     return penumbra::viz::runPlotCommand(gridPlot);
+  }
+  if (*renderCommand) {
+    render.culling = !renderNoCulling;
+    render.parameters = penumbra::cli::parameterAssignments(renderSettings);
+    return penumbra::runRenderCommand(render);
   }
   if (*plotCommand) return penumbra::viz::runPlotCommand(plot);
   if (*sweepCommand) return penumbra::runSweepCommand(sweep);

@@ -73,7 +73,7 @@ std::string kernelError(int bits, const SamplePoint& p) {
 
 }  // namespace
 
-IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points) {
+IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
   IlluminanceResult result;
   result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
@@ -107,7 +107,8 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
   DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
   DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
-  DeviceBuffer out = DeviceBuffer::allocate(d, padded * sizeof(float));
+  const std::size_t outValues = bySource ? padded * std::max(result.sourceCount, 1) : padded;
+  DeviceBuffer out = DeviceBuffer::allocate(d, outValues * sizeof(float));
   DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
   const std::size_t classBytes = padded * std::max(result.sourceCount, 1);
   DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
@@ -128,30 +129,42 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   launch.arg(a++, patchBuffer);
   launch.arg(a++, candidateBuffer);
   launch.arg(a++, state_->options.culling ? 1 : 0);
+  launch.arg(a++, bySource ? 1 : 0);
   launch.arg(a++, out);
   launch.arg(a++, errors);
   launch.arg(a++, classes);
   launch.arg(a++, static_cast<int>(padded));
   launch.run(workItems, kWorkGroup);
 
-  std::vector<float> e(padded);
-  out.download(e.data(), padded * sizeof(float));
+  std::vector<float> e(outValues);
+  out.download(e.data(), outValues * sizeof(float));
   std::vector<cl_int> errorBits(workItems);
   errors.download(errorBits.data(), workItems * sizeof(cl_int));
   for (std::size_t w = 0; w < workItems; ++w)
     if (errorBits[w] != 0)
       throw std::runtime_error(kernelError(errorBits[w], points[std::min(w * PN_LANES, n - 1)]));
-  result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  if (bySource) {
+    result.bySource.resize(n * result.sourceCount);
+    result.illuminance.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int s = 0; s < result.sourceCount; ++s) {
+        const double v = e[s * padded + i];
+        result.bySource[i * result.sourceCount + s] = v;
+        result.illuminance[i] += v;
+      }
+  } else {
+    result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  }
 
   // The kernel writes classes source by source ([source][padded point]); callers read them point
   // by point.
-  std::vector<std::uint8_t> bySource(classBytes);
-  classes.download(bySource.data(), classBytes);
+  std::vector<std::uint8_t> classesBySource(classBytes);
+  classes.download(classesBySource.data(), classBytes);
   result.shadowClass.resize(n * result.sourceCount);
   for (std::size_t i = 0; i < n; ++i)
     for (int s = 0; s < result.sourceCount; ++s)
       result.shadowClass[i * result.sourceCount + s] =
-          static_cast<ShadowClass>(bySource[s * padded + i]);
+          static_cast<ShadowClass>(classesBySource[s * padded + i]);
   return result;
 }
 

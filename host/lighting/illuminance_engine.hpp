@@ -22,6 +22,7 @@ struct EngineOptions {
 struct IlluminanceResult {
   std::vector<double> illuminance;       // lx, per point, summed over all sources
   std::vector<ShadowClass> shadowClass;  // [point * sourceCount + source]
+  std::vector<double> bySource;          // lx, [point * sourceCount + source], when asked for
   int sourceCount = 0;
   ShadowClass shadow(std::size_t point, int source) const {
     return shadowClass[point * static_cast<std::size_t>(sourceCount) + source];
@@ -43,7 +44,9 @@ class IlluminanceEngine {
   std::vector<double> illuminance(std::span<const SamplePoint> points);
   // E and each point's shadow class per source. With culling off the classes come from the
   // plain path's tests: Lit or Penumbra ("some occluder may block"), never Umbra.
-  IlluminanceResult evaluate(std::span<const SamplePoint> points);
+  // With `bySource`, also E from each source separately (a render needs it when sources differ
+  // in colour).
+  IlluminanceResult evaluate(std::span<const SamplePoint> points, bool bySource = false);
 
  private:
   struct State;

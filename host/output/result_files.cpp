@@ -37,24 +37,27 @@ nlohmann::json number(double value) {
   return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
-// {"window_width_m": 1.6, ...}: the values the scene's parameters had in this run.
+}  // namespace
+
 nlohmann::json parameterJson(const ParameterValues& values) {
   nlohmann::json object = nlohmann::json::object();
   for (const ParameterValue& p : values) object[p.name] = p.value;
   return object;
 }
 
-}  // namespace
-
 std::string gridFileStem(const std::string& gridName) {
+  return safeFileStem(gridName, "grid_");
+}
+
+std::string safeFileStem(const std::string& name, const std::string& prefix) {
   std::string stem;
-  for (char c : gridName) {
+  for (char c : name) {
     const bool plain = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
                        c == '.' || c == '_' || c == '-';
     stem += plain ? c : '_';
   }
   // "" and names starting with '.' would be hidden or special ("..").
-  if (stem.empty() || stem.front() == '.') stem.insert(0, "grid_");
+  if (stem.empty() || stem.front() == '.') stem.insert(0, prefix);
   return stem;
 }
 

@@ -20,6 +20,10 @@ namespace penumbra {
 // The file name stem of a grid: its name with every character outside [A-Za-z0-9._-] replaced by
 // '_' (grid names come from the scene; they must not reach outside the output directory).
 std::string gridFileStem(const std::string& gridName);
+// The same for any name; `prefix` goes in front of an empty name or one starting with '.'.
+std::string safeFileStem(const std::string& name, const std::string& prefix);
+// {"window_width_m": 1.6, ...}: the values the scene's parameters had in a run.
+nlohmann::json parameterJson(const ParameterValues& values);
 
 // The `kind` of a grid in summary.json: "work-plane", "rect" or "points". The reverse throws
 // std::runtime_error for any other name.

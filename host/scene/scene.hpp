@@ -61,12 +61,22 @@ struct Room {
   std::vector<Opening> openings;
 };
 
+// A camera for `penumbra render`: a pinhole at `eye` looking at `target`, `up` tilting the image
+// (it need not be perpendicular to the line of sight), `fovDegrees` the horizontal angle of view.
+struct View {
+  std::string name;
+  Vec3 eye = Vec3::Zero(), target = Vec3::UnitX(), up = Vec3::UnitZ();  // m, m, unit
+  double fovDegrees = 60.0;
+  int width = 1280, height = 720;  // pixels
+};
+
 struct Scene {
   std::filesystem::path file;
   std::vector<Material> materials;
   std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0.1, ...)
   std::vector<Source> sources;
   std::vector<CalculationGrid> grids;
+  std::vector<View> views;
   std::optional<Room> room;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
 

@@ -74,6 +74,17 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   for (const GridSpec& grid : spec.grids) {
     scene.grids.push_back(buildGrid(grid, scene.room, context));
   }
+  for (const ViewSpec& view : spec.views) {
+    // A camera inside a wall or a desk would show the inside of a solid: black, or nothing.
+    for (const Solid& solid : scene.solids) {
+      if (solid.shape.containsStrictly(view.eye, context.tolerance)) {
+        fail(file, view.eyeWhere,
+             fmt::format("view '{}': the eye {} m is inside the solid '{}'; move it into the room",
+                         view.name, formatVec3(view.eye), solid.name));
+      }
+    }
+    scene.views.push_back(static_cast<const View&>(view));
+  }
   return scene;
 }
 

@@ -99,12 +99,17 @@ struct GridSpec {
   Where where;
 };
 
+struct ViewSpec : View {
+  Where where, eyeWhere;
+};
+
 struct SceneSpec {
   std::vector<Material> materials;
   std::optional<RoomSpec> room;
   std::vector<SolidSpec> solids;
   std::vector<SourceSpec> sources;
   std::vector<GridSpec> grids;
+  std::vector<ViewSpec> views;
 };
 
 }  // namespace penumbra::scenefile

@@ -6,6 +6,7 @@
 
 #include "scene/grid_reader.hpp"
 #include "scene/shape_reader.hpp"
+#include "scene/view_reader.hpp"
 
 namespace penumbra::scenefile {
 namespace {
@@ -217,8 +218,9 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   }
   const MapView root = reader.map(reader.root(document), "the scene");
   // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
-  root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids"},
-                 "a scene");
+  root.allowOnly(
+      {"penumbra", "parameters", "materials", "room", "solids", "sources", "grids", "views"},
+      "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
         Where{root.where().line, "penumbra"},
@@ -240,6 +242,8 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
                                       [&](const Field& item) { return readSource(reader, item); });
   spec.grids = readList<GridSpec>(reader, root, "grids",
                                   [&](const Field& item) { return readGrid(reader, item); });
+  spec.views = readList<ViewSpec>(reader, root, "views",
+                                  [&](const Field& item) { return readView(reader, item); });
   return spec;
 }
 

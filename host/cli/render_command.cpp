@@ -1,0 +1,98 @@
+#include "cli/render_command.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+
+#include "cl/device.hpp"
+#include "cli/exit_status.hpp"
+#include "cli/render_progress.hpp"
+#include "cli/version.hpp"
+#include "output/render_files.hpp"
+#include "output/staged_directory.hpp"
+#include "render/preview.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+
+namespace penumbra {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::vector<const View*> selectViews(const Scene& scene, const RenderCommandOptions& options) {
+  if (scene.views.empty()) {
+    throw std::runtime_error(fmt::format(
+        "{} has no views to render; add one under 'views:' (docs/scene-format.md, \"Views\"), "
+        "e.g. views: [{{name: from-door, eye: [0.5, 3.5, 1.6], target: [4, 1, 1.2]}}]",
+        options.scene.string()));
+  }
+  std::vector<const View*> views;
+  for (const View& view : scene.views)
+    if (options.views.empty() ||
+        std::find(options.views.begin(), options.views.end(), view.name) != options.views.end())
+      views.push_back(&view);
+  for (const std::string& name : options.views) {
+    if (std::none_of(views.begin(), views.end(), [&](const View* v) { return v->name == name; })) {
+      std::string known;
+      for (const View& view : scene.views) known += (known.empty() ? "" : ", ") + view.name;
+      throw std::runtime_error(fmt::format("{} has no view '{}'; its views are: {}",
+                                           options.scene.string(), name, known));
+    }
+  }
+  return views;
+}
+
+int run(const RenderCommandOptions& options) {
+  const auto start = Clock::now();
+  checkOutputTarget(options.output);
+  const Scene scene = loadScene(options.scene, options.parameters);
+  const std::vector<const View*> views = selectViews(scene, options);
+
+  compute::Device device = compute::Device::select(options.device);
+  const compute::DeviceInfo& info = device.info();
+  RenderReport report;
+  report.version = kVersion;
+  report.sceneFile = options.scene;
+  report.parameters = scene.parameters;
+  report.device = fmt::format("{} ({}, {})", info.name, info.platform, info.type);
+  report.interval = options.interval;
+  report.spp = options.spp;
+  report.display = "preview: linear, 99th percentile of the surfaces' luminance = white, sRGB";
+  if (!options.quiet) {
+    fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
+  }
+  Renderer renderer(device, scene, EngineOptions{options.culling});
+  for (const View* view : views) {
+    RenderProgress progress(!options.quiet, view->name, view->height);
+    RenderOptions renderOptions{options.interval, options.spp,
+                                [&](double fraction) { progress.update(fraction); }};
+    RenderedView rendered = renderer.render(*view, renderOptions);
+    progress.finish();
+    DisplayImage display = linearPreview(rendered.luminance, rendered.faces);
+    report.views.push_back({std::move(rendered), std::move(display)});
+  }
+  report.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+  writeRenders(report, options.output);
+  if (!options.quiet) {
+    for (const RenderReport::ViewFiles& files : report.views) {
+      const RenderedView& r = files.rendered;
+      const RenderStats& s = r.stats;
+      fmt::print(
+          "{:<16} {} × {} px, {} sample(s)/px, exact {:.1f} % of surface samples, "
+          "visibility {:.2f} s, illuminance {:.2f} s, shading {:.2f} s\n",
+          r.view.name, r.view.width, r.view.height, options.spp, 100.0 * s.exactShare(),
+          s.visibilitySeconds, s.illuminanceSeconds, s.shadingSeconds);
+    }
+    fmt::print("renders in {}\n", normalizedTarget(options.output).string());
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runRenderCommand(const RenderCommandOptions& options) {
+  return cli::reportingErrors([&] { return run(options); });
+}
+
+}  // namespace penumbra

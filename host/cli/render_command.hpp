@@ -1,0 +1,27 @@
+#pragma once
+// `penumbra render`: scene and views in, HDR images and AOVs out (output/render_files.hpp).
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene/parameters.hpp"
+
+namespace penumbra {
+
+struct RenderCommandOptions {
+  std::filesystem::path scene;
+  std::filesystem::path output;
+  std::vector<std::string> views;  // only these; all when empty
+  int interval = 1;                // exact every k pixels along a row
+  int spp = 1;                     // samples per pixel (a square)
+  std::string device = "auto";
+  bool culling = true;
+  ParameterValues parameters;
+  bool quiet = false;
+};
+
+// Exit status as `penumbra grid`: 0 done; 1 error; 2 invalid scene. Nothing is written unless
+// every view rendered.
+int runRenderCommand(const RenderCommandOptions& options);
+
+}  // namespace penumbra

@@ -1,0 +1,118 @@
+#include "output/render_files.hpp"
+
+#include <fmt/format.h>
+
+#include <set>
+#include <stdexcept>
+
+#include "output/image_files.hpp"
+#include "output/result_files.hpp"
+#include "output/staged_directory.hpp"
+
+namespace penumbra {
+namespace {
+
+std::string vec3Text(const Vec3& v) {
+  return fmt::format("{} {} {}", v.x(), v.y(), v.z());
+}
+
+nlohmann::json vec3Json(const Vec3& v) {
+  return nlohmann::json::array({v.x(), v.y(), v.z()});
+}
+
+// What every image of a view carries in its header.
+ImageMetadata viewMetadata(const RenderReport& report, const View& view, const std::string& units) {
+  return {{"penumbra:version", report.version},
+          {"penumbra:scene", report.sceneFile.string()},
+          {"penumbra:parameters", describeParameters(report.parameters)},
+          {"penumbra:view", view.name},
+          {"penumbra:eye_m", vec3Text(view.eye)},
+          {"penumbra:target_m", vec3Text(view.target)},
+          {"penumbra:up", vec3Text(view.up)},
+          {"penumbra:fov_deg", fmt::format("{}", view.fovDegrees)},
+          {"penumbra:interval", std::to_string(report.interval)},
+          {"penumbra:spp", std::to_string(report.spp)},
+          {"penumbra:units", units}};
+}
+
+}  // namespace
+
+std::string viewFileStem(const std::string& viewName) {
+  return safeFileStem(viewName, "view_");
+}
+
+nlohmann::json renderJson(const RenderReport& report) {
+  nlohmann::json views = nlohmann::json::array();
+  for (const RenderReport::ViewFiles& files : report.views) {
+    const RenderedView& r = files.rendered;
+    const RenderStats& s = r.stats;
+    const std::string stem = viewFileStem(r.view.name);
+    views.push_back({
+        {"name", r.view.name},
+        {"eye_m", vec3Json(r.view.eye)},
+        {"target_m", vec3Json(r.view.target)},
+        {"up", vec3Json(r.view.up)},
+        {"fov_deg", r.view.fovDegrees},
+        {"width_px", r.view.width},
+        {"height_px", r.view.height},
+        {"files",
+         {{"luminance_exr", stem + ".exr"},
+          {"luminance_hdr", stem + ".hdr"},
+          {"illuminance_exr", stem + ".E.exr"},
+          {"faceid_exr", stem + ".faceid.exr"},
+          {"display_png", stem + ".png"}}},
+        {"samples", s.samples},
+        {"surface_samples", s.surfaceSamples},
+        {"exact_samples", s.exactSamples},
+        {"exact_share", s.exactShare()},
+        {"object_tests_per_sample", s.objectTestsPerSample},
+        {"timing",
+         {{"visibility_s", s.visibilitySeconds},
+          {"illuminance_s", s.illuminanceSeconds},
+          {"shading_s", s.shadingSeconds}}},
+    });
+  }
+  return {
+      {"penumbra_version", report.version},
+      {"scene", report.sceneFile.string()},
+      {"parameters", parameterJson(report.parameters)},
+      {"device", report.device},
+      {"interval", report.interval},
+      {"spp", report.spp},
+      {"display", report.display},
+      {"units", {{"luminance", "cd/m2"}, {"illuminance", "lx"}}},
+      {"total_s", report.totalSeconds},
+      {"views", views},
+  };
+}
+
+void writeRenders(const RenderReport& report, const std::filesystem::path& directory) {
+  std::set<std::string> stems;
+  for (const RenderReport::ViewFiles& files : report.views) {
+    const std::string stem = viewFileStem(files.rendered.view.name);
+    if (!stems.insert(stem).second) {
+      throw std::runtime_error(fmt::format(
+          "two views would be written to {}.exr; give them names that differ in letters or digits",
+          stem));
+    }
+  }
+  StagedDirectory staged(directory);
+  const std::filesystem::path& dir = staged.staging();
+  for (const RenderReport::ViewFiles& files : report.views) {
+    const RenderedView& r = files.rendered;
+    const std::string stem = viewFileStem(r.view.name);
+    writeRgbExr(dir / (stem + ".exr"), r.luminance, viewMetadata(report, r.view, "cd/m2"));
+    writeRadianceHdr(dir / (stem + ".hdr"), r.luminance, viewMetadata(report, r.view, "cd/m2"));
+    writeScalarExr(dir / (stem + ".E.exr"), r.illuminance, "E", viewMetadata(report, r.view, "lx"));
+    writeFaceIdExr(dir / (stem + ".faceid.exr"), r.faces,
+                   viewMetadata(report, r.view, "face id (0: none)"));
+    ImageMetadata png = viewMetadata(report, r.view, "display values");
+    png.emplace_back("penumbra:display", report.display);
+    writePng(dir / (stem + ".png"), files.display, png);
+  }
+  writeFile(dir / "render.json",
+            [&](std::ostream& out) { out << renderJson(report).dump(2) << "\n"; });
+  staged.commit();
+}
+
+}  // namespace penumbra

@@ -1,0 +1,43 @@
+#pragma once
+// The files of a `penumbra render` run, in one output directory, per view:
+//   <view>.exr          luminance, linear RGB, 32-bit float, cd/m²
+//   <view>.hdr          the same as Radiance RGBE (for Radiance tools and HDR viewers)
+//   <view>.E.exr        illuminance at each pixel's visible point, channel "E", lx
+//   <view>.faceid.exr   which face each pixel shows, channel "id" (render/visible_scene.hpp)
+//   <view>.png          the display image
+// and render.json: scene, parameters, device, options and per view its camera and statistics.
+// The view, scene and units are also written into each image's header ("penumbra:*").
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "image/images.hpp"
+#include "render/renderer.hpp"
+#include "scene/parameters.hpp"
+
+namespace penumbra {
+
+struct RenderReport {
+  std::string version;
+  std::filesystem::path sceneFile;
+  ParameterValues parameters;
+  std::string device;
+  int interval = 1, spp = 1;
+  std::string display;  // how the PNG was made
+  struct ViewFiles {
+    RenderedView rendered;
+    DisplayImage display;
+  };
+  std::vector<ViewFiles> views;
+  double totalSeconds = 0.0;
+};
+
+// The file name stem of a view (its name, with characters outside [A-Za-z0-9._-] replaced).
+std::string viewFileStem(const std::string& viewName);
+nlohmann::json renderJson(const RenderReport& report);
+// Writes every file into `directory` atomically (StagedDirectory): all or none.
+void writeRenders(const RenderReport& report, const std::filesystem::path& directory);
+
+}  // namespace penumbra

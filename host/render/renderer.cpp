@@ -1,0 +1,251 @@
+#include "render/renderer.hpp"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "render/camera.hpp"
+#include "render/interval_sampling.hpp"
+#include "render/visibility_engine.hpp"
+
+namespace penumbra {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Points per call of the illuminance engine: bounds the memory of one call and gives the progress
+// line something to count.
+constexpr std::size_t kBatch = 1 << 16;
+
+// Everything per sample of one camera's sample grid.
+struct SampleLayer {
+  VisibilityImage visibility;
+  std::vector<float> illuminance;  // lx
+  std::vector<float> rgb;          // cd/m², 3 per sample
+};
+
+}  // namespace
+
+Vec3 luminanceColour(const Vec3& colour) {
+  const double y = 0.2126 * colour.x() + 0.7152 * colour.y() + 0.0722 * colour.z();
+  return colour / y;
+}
+
+struct Renderer::State {
+  compute::Device* device;
+  const Scene* scene;
+  IlluminanceEngine illuminance;
+  VisibilityEngine visibility;
+  std::vector<Vec3> sourceColours;  // luminanceColour per source
+  bool colouredSources = false;     // some two sources differ in colour: E per source needed
+  std::vector<Vec3> solidReflectance;
+
+  State(compute::Device& d, const Scene& s, EngineOptions engine)
+      : device(&d), scene(&s), illuminance(d, s, engine), visibility(d, s) {
+    prepare();
+  }
+
+  void prepare() {
+    sourceColours.clear();
+    for (const Source& source : scene->sources)
+      sourceColours.push_back(luminanceColour(source.color));
+    colouredSources = false;
+    for (const Vec3& c : sourceColours)
+      colouredSources |= !c.isApprox(sourceColours.front(), 1e-12);
+    solidReflectance.clear();
+    for (const Solid& solid : scene->solids)
+      solidReflectance.push_back(solid.material >= 0 ? scene->materials[solid.material].reflectance
+                                                     : Material{}.reflectance);
+  }
+
+  // The visible point of sample i, on the face it shows, as the grids' SamplePoint.
+  SamplePoint surfacePoint(const Camera& camera, const VisibilityImage& vis, std::size_t i) const {
+    const VisibleFace& face = visibility.visible().face(vis.faceIds[i]);
+    const int x = static_cast<int>(i % vis.width), y = static_cast<int>(i / vis.width);
+    Vec3 p = camera.eye + static_cast<double>(vis.t[i]) * camera.direction(x, y);
+    // The kernel's t is float: put the point back on its face's plane.
+    p -= face.plane.signedDistance(p) * face.plane.normal;
+    return SamplePoint{p, face.plane.normal, face.index};
+  }
+
+  // Exact illuminance and luminance for `indices` (batches of kBatch), and the shadow classes
+  // (per index position × source) for the interval plan.
+  std::vector<ShadowClass> evaluate(const Camera& camera, SampleLayer& layer,
+                                    const std::vector<std::size_t>& indices,
+                                    const std::function<void(std::size_t)>& done) {
+    const int sources = static_cast<int>(scene->sources.size());
+    std::vector<ShadowClass> classes(indices.size() * sources);
+    std::vector<SamplePoint> points;
+    for (std::size_t start = 0; start < indices.size(); start += kBatch) {
+      const std::size_t end = std::min(indices.size(), start + kBatch);
+      points.clear();
+      for (std::size_t j = start; j < end; ++j)
+        points.push_back(surfacePoint(camera, layer.visibility, indices[j]));
+      const IlluminanceResult result = illuminance.evaluate(points, colouredSources);
+      for (std::size_t j = start; j < end; ++j) {
+        const std::size_t i = indices[j], local = j - start;
+        const Vec3& rho = solidReflectance[points[local].solid];
+        Vec3 light = Vec3::Zero();  // Σ E_s · colour_s
+        if (colouredSources) {
+          for (int s = 0; s < sources; ++s)
+            light += result.bySource[local * sources + s] * sourceColours[s];
+        } else if (sources > 0) {
+          light = result.illuminance[local] * sourceColours.front();
+        }
+        const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
+        layer.illuminance[i] = static_cast<float>(result.illuminance[local]);
+        for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
+        for (int s = 0; s < sources; ++s)
+          classes[j * sources + s] = result.shadowClass[local * sources + s];
+      }
+      done(end - start);
+    }
+    return classes;
+  }
+
+  SampleLayer renderSamples(const Camera& camera, int interval, RenderStats& stats,
+                            const std::function<void(std::size_t, std::size_t)>& progress) {
+    SampleLayer layer;
+    auto start = Clock::now();
+    layer.visibility = visibility.trace(camera);
+    stats.visibilitySeconds += secondsSince(start);
+    stats.objectTestsPerSample = layer.visibility.objectTestsPerSample;
+    const std::size_t n = layer.visibility.faceIds.size();
+    layer.illuminance.assign(n, 0.0f);
+    layer.rgb.assign(n * 3, 0.0f);
+
+    start = Clock::now();
+    std::vector<uint8_t> needed(n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const uint32_t id = layer.visibility.faceIds[i];
+      if (id == FaceIdImage::kNoSurface) continue;
+      const VisibleFace& face = visibility.visible().face(id);
+      if (face.isSource) {
+        const Source& source = scene->sources[face.index];
+        const Vec3 l = source.luminance * sourceColours[face.index];
+        for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
+      } else {
+        needed[i] = 1;
+        ++stats.surfaceSamples;
+      }
+    }
+    stats.samples += n;
+    IntervalPlan plan(camera.width, camera.height, layer.visibility.faceIds, needed, interval);
+    stats.shadingSeconds += secondsSince(start);
+
+    start = Clock::now();
+    const std::vector<std::size_t>& first = plan.firstPass();
+    std::size_t done = 0;
+    // The second pass is unknown until the first is done: progress counts what is known.
+    const std::size_t expected = stats.surfaceSamples;
+    const auto advance = [&](std::size_t count) {
+      done += count;
+      if (progress) progress(std::min(done, expected), expected);
+    };
+    const std::vector<ShadowClass> firstClasses = evaluate(camera, layer, first, advance);
+    const int sources = static_cast<int>(scene->sources.size());
+    // Where a sample sits in the first pass, to compare the classes of an interval's two ends.
+    std::vector<std::size_t> position(n, 0);
+    for (std::size_t j = 0; j < first.size(); ++j) position[first[j]] = j;
+    const std::vector<std::size_t> second = plan.secondPass([&](std::size_t a, std::size_t b) {
+      for (int s = 0; s < sources; ++s)
+        if (firstClasses[position[a] * sources + s] != firstClasses[position[b] * sources + s])
+          return false;
+      return true;
+    });
+    evaluate(camera, layer, second, advance);
+    stats.exactSamples += first.size() + second.size();
+    plan.interpolate(layer.illuminance, 1);
+    plan.interpolate(layer.rgb, 3);
+    stats.illuminanceSeconds += secondsSince(start);
+    if (progress) progress(expected, expected);
+    return layer;
+  }
+};
+
+Renderer::Renderer(compute::Device& device, const Scene& scene, EngineOptions engine)
+    : state_(std::make_unique<State>(device, scene, engine)) {}
+Renderer::~Renderer() = default;
+
+void Renderer::setScene(const Scene& scene) {
+  state_->scene = &scene;
+  state_->illuminance.setScene(scene);
+  state_->visibility.setScene(scene);
+  state_->prepare();
+}
+
+std::vector<std::optional<SamplePoint>> Renderer::visiblePoints(const View& view) {
+  const Camera camera = Camera::forView(view, 1);
+  const VisibilityImage vis = state_->visibility.trace(camera);
+  std::vector<std::optional<SamplePoint>> points(vis.faceIds.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const uint32_t id = vis.faceIds[i];
+    if (id != FaceIdImage::kNoSurface && !state_->visibility.visible().face(id).isSource)
+      points[i] = state_->surfacePoint(camera, vis, i);
+  }
+  return points;
+}
+
+RenderedView Renderer::render(const View& view, const RenderOptions& options) {
+  if (options.interval < 1) {
+    throw std::invalid_argument(
+        fmt::format("the interval must be 1 or more samples, got {}", options.interval));
+  }
+  const int side = static_cast<int>(std::lround(std::sqrt(static_cast<double>(options.spp))));
+  if (options.spp < 1 || side * side != options.spp) {
+    throw std::invalid_argument(fmt::format(
+        "samples per pixel must be a square (1, 4, 9, 16, ...): a side × side grid in each "
+        "pixel; got {}",
+        options.spp));
+  }
+  RenderedView out;
+  out.view = view;
+  // The AOVs are at pixel centres (one sample per pixel); with supersampling the image is the
+  // mean of side × side samples per pixel, rendered as a second, finer layer. Progress counts
+  // both layers by their share of the samples.
+  const double centreShare = side == 1 ? 1.0 : 1.0 / (1.0 + options.spp);
+  const auto report = [&](double offset, double share) {
+    return [&, offset, share](std::size_t done, std::size_t total) {
+      if (options.progress) options.progress(offset + share * (total ? double(done) / total : 1.0));
+    };
+  };
+  const Camera centreCamera = Camera::forView(view, 1);
+  const SampleLayer centre =
+      state_->renderSamples(centreCamera, options.interval, out.stats, report(0.0, centreShare));
+  const auto start = Clock::now();
+  out.illuminance = ScalarImage(view.width, view.height);
+  out.illuminance.values = centre.illuminance;
+  out.faces = FaceIdImage(view.width, view.height);
+  out.faces.ids = centre.visibility.faceIds;
+  out.luminance = RgbImage(view.width, view.height);
+  out.stats.shadingSeconds += secondsSince(start);
+  if (side == 1) {
+    out.luminance.rgb = centre.rgb;
+    return out;
+  }
+  const SampleLayer fine = state_->renderSamples(Camera::forView(view, side), options.interval,
+                                                 out.stats, report(centreShare, 1.0 - centreShare));
+  const auto filterStart = Clock::now();
+  const int fineWidth = view.width * side;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      float* pixel = out.luminance.pixel(x, y);
+      for (int sy = 0; sy < side; ++sy)
+        for (int sx = 0; sx < side; ++sx) {
+          const std::size_t i = static_cast<std::size_t>(y * side + sy) * fineWidth + x * side + sx;
+          for (int c = 0; c < 3; ++c) pixel[c] += fine.rgb[i * 3 + c];
+        }
+      for (int c = 0; c < 3; ++c) pixel[c] /= static_cast<float>(options.spp);
+    }
+  out.stats.shadingSeconds += secondsSince(filterStart);
+  return out;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,95 @@
+#include "render/visibility_engine.hpp"
+
+#include "cl/buffer.hpp"
+#include "geometry/tolerance.hpp"
+#include "render/screen_tiles.hpp"
+
+namespace penumbra {
+
+using compute::DeviceBuffer;
+
+struct VisibilityEngine::State {
+  compute::Device* device;
+  compute::Program program;
+  VisibleScene visible;
+  DeviceBuffer objects, planes;
+  double minDepth = 0.0;
+
+  State(compute::Device& d, const Scene& scene)
+      : device(&d), program(d, "visibility", "-cl-std=CL1.2") {
+    upload(scene);
+  }
+  void upload(const Scene& scene) {
+    visible = buildVisibleScene(scene);
+    objects = DeviceBuffer::upload<PnVisibleObject>(*device, visible.objects);
+    planes = DeviceBuffer::upload<cl_float4>(*device, visible.planes);
+    minDepth = Tolerance::forSceneSize(scene.size()).length;
+  }
+};
+
+VisibilityEngine::VisibilityEngine(compute::Device& device, const Scene& scene)
+    : state_(std::make_unique<State>(device, scene)) {}
+VisibilityEngine::~VisibilityEngine() = default;
+
+void VisibilityEngine::setScene(const Scene& scene) {
+  state_->upload(scene);
+}
+
+const VisibleScene& VisibilityEngine::visible() const {
+  return state_->visible;
+}
+
+namespace {
+
+std::array<float, 4> float4(const Vec3& v) {
+  return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f};
+}
+
+}  // namespace
+
+VisibilityImage VisibilityEngine::trace(const Camera& camera) {
+  VisibilityImage image;
+  image.width = camera.width;
+  image.height = camera.height;
+  const std::size_t samples = static_cast<std::size_t>(camera.width) * camera.height;
+  const ScreenTiles tiles = binObjects(state_->visible, camera, state_->minDepth);
+  double scanned = 0.0;
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) {
+      const int t = (y / PN_VISIBILITY_TILE) * tiles.across + x / PN_VISIBILITY_TILE;
+      scanned += tiles.start[t + 1] - tiles.start[t];
+    }
+  image.objectTestsPerSample = samples ? scanned / samples : 0.0;
+
+  compute::Device& d = *state_->device;
+  DeviceBuffer tileStart = DeviceBuffer::upload<int>(d, tiles.start);
+  DeviceBuffer tileObjects = DeviceBuffer::upload<int>(d, tiles.objects);
+  DeviceBuffer ids = DeviceBuffer::allocate(d, samples * sizeof(uint32_t));
+  DeviceBuffer t = DeviceBuffer::allocate(d, samples * sizeof(float));
+  compute::KernelLaunch launch(state_->program, "visibility");
+  // Argument order: kernels/visibility.cl.
+  unsigned a = 0;
+  launch.arg(a++, float4(camera.eye));
+  launch.arg(a++, float4(camera.forward));
+  launch.arg(a++, float4(camera.right));
+  launch.arg(a++, float4(camera.up));
+  launch.arg(a++, camera.width);
+  launch.arg(a++, camera.height);
+  launch.arg(a++, tiles.across);
+  launch.arg(a++, tileStart);
+  launch.arg(a++, tileObjects);
+  launch.arg(a++, state_->objects);
+  launch.arg(a++, state_->planes);
+  launch.arg(a++, ids);
+  launch.arg(a++, t);
+  // A fixed work-group size (see KernelLaunch::run); the kernel skips the padding.
+  constexpr std::size_t kGroup = 64;
+  launch.run((samples + kGroup - 1) / kGroup * kGroup, kGroup);
+  image.faceIds.resize(samples);
+  image.t.resize(samples);
+  ids.download(image.faceIds.data(), samples * sizeof(uint32_t));
+  t.download(image.t.data(), samples * sizeof(float));
+  return image;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,87 @@
+/* Primary visibility (Nishita §2.2 step ii, done per sample rather than by scanline polygon
+ * sorting): for every sample of the image, the nearest face a ray from the eye meets.
+ *
+ * Samples form a W × H grid (pixels × supersampling, row-major, row 0 at the top). The ray of
+ * sample (X, Y) is forward + sx·right + sy·up with sx, sy in (-1, 1) at the sample's centre;
+ * right and up are pre-scaled by the field of view on the host. The host bins objects into
+ * screen tiles of PN_VISIBILITY_TILE² samples (the objects whose projection may cover the tile,
+ * in scene order), so a sample tests only its tile's list.
+ *
+ * Output per sample: the face id (0: nothing is hit) and the ray parameter t of the hit (the
+ * hit point is eye + t·direction, with the unnormalised direction above). Ties in t go to the
+ * earlier object in scene order, which is also the tile list's order. */
+
+/* Ray against the intersection of half-spaces n·x <= w: the entering parameter and the plane
+ * it enters through, or -1 when the ray misses, starts inside, or enters beyond t_best. */
+static int hit_solid(float3 o, float3 d, __global const float4* planes, int first, int count,
+                     float t_best, float* t_hit) {
+  float t_near = 0.0f, t_far = t_best;
+  int entered = -1;
+  for (int i = 0; i < count; ++i) {
+    float4 pl = planes[first + i];
+    float denom = dot(pl.xyz, d);
+    float dist = pl.w - dot(pl.xyz, o); /* >= 0: the origin is inside this plane */
+    if (denom < 0.0f) {
+      float t = dist / denom;
+      if (t > t_near) {
+        t_near = t;
+        entered = first + i;
+      }
+    } else if (denom > 0.0f) {
+      t_far = min(t_far, dist / denom);
+    } else if (dist < 0.0f) {
+      return -1; /* parallel and outside */
+    }
+  }
+  if (entered < 0 || t_near > t_far || t_near >= t_best) return -1;
+  *t_hit = t_near;
+  return entered - first;
+}
+
+/* Ray against a convex polygon seen from its front (emitting) side. */
+static int hit_polygon(float3 o, float3 d, __global const float4* planes, int first, int count,
+                       float t_best, float* t_hit) {
+  float4 pl = planes[first];
+  float denom = dot(pl.xyz, d);
+  if (denom >= 0.0f) return -1; /* seen from behind or edge-on */
+  float t = (pl.w - dot(pl.xyz, o)) / denom;
+  if (t <= 0.0f || t >= t_best) return -1;
+  float3 x = o + t * d;
+  for (int i = 1; i < count; ++i) {
+    float4 side = planes[first + i];
+    if (dot(side.xyz, x) > side.w) return -1;
+  }
+  *t_hit = t;
+  return 0;
+}
+
+__kernel void visibility(const float4 eye, const float4 forward, const float4 right,
+                         const float4 up, const int width, const int height, const int tiles_across,
+                         __global const int* tile_start, __global const int* tile_objects,
+                         __global const PnVisibleObject* objects, __global const float4* planes,
+                         __global uint* face_ids, __global float* t_out) {
+  const int g = (int)get_global_id(0);
+  if (g >= width * height) return;
+  const int x = g % width, y = g / width;
+  const float sx = 2.0f * ((float)x + 0.5f) / (float)width - 1.0f;
+  const float sy = 1.0f - 2.0f * ((float)y + 0.5f) / (float)height;
+  const float3 o = eye.xyz;
+  const float3 d = forward.xyz + sx * right.xyz + sy * up.xyz;
+
+  const int tile = (y / PN_VISIBILITY_TILE) * tiles_across + x / PN_VISIBILITY_TILE;
+  float t_best = INFINITY;
+  uint best = 0;
+  for (int k = tile_start[tile]; k < tile_start[tile + 1]; ++k) {
+    PnVisibleObject obj = objects[tile_objects[k]];
+    float t = 0.0f;
+    int face = obj.kind == PN_VISIBLE_SOLID
+                   ? hit_solid(o, d, planes, obj.firstPlane, obj.planeCount, t_best, &t)
+                   : hit_polygon(o, d, planes, obj.firstPlane, obj.planeCount, t_best, &t);
+    if (face >= 0) {
+      t_best = t;
+      best = (uint)(obj.firstFaceId + face);
+    }
+  }
+  face_ids[g] = best;
+  t_out[g] = best != 0 ? t_best : 0.0f;
+}
