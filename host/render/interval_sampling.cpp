@@ -1,6 +1,7 @@
 #include "render/interval_sampling.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace penumbra {
 
@@ -30,18 +31,57 @@ IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> face
   }
 }
 
-std::vector<std::size_t> IntervalPlan::secondPass(
-    const std::function<bool(std::size_t a, std::size_t b)>& sameClasses) {
-  std::vector<std::size_t> second;
+void IntervalPlan::appendInterior(const Interval& interval, std::vector<std::size_t>& out) {
+  for (std::size_t i = interval.a + 1; i < interval.b; ++i) out.push_back(i);
+}
+
+std::vector<std::size_t> IntervalPlan::secondPass(std::span<const ShadowClass> classes,
+                                                  int sources) {
+  std::vector<std::size_t> next;
   for (const Interval& interval : undecided_) {
-    if (sameClasses(interval.a, interval.b)) {
-      interpolated_.push_back(interval);
+    bool same = true, penumbra = false;
+    for (int s = 0; s < sources; ++s) {
+      const ShadowClass ca = classes[interval.a * sources + s];
+      same &= ca == classes[interval.b * sources + s];
+      penumbra |= ca == ShadowClass::Penumbra;
+    }
+    if (!same) {
+      appendInterior(interval, next);
+    } else if (penumbra && interval.b - interval.a >= 3) {
+      next.push_back((interval.a + interval.b) / 2);
+      checking_.push_back(interval);
     } else {
-      for (std::size_t i = interval.a + 1; i < interval.b; ++i) second.push_back(i);
+      // Lit or umbra throughout (or a single inner sample: interpolating it from its two
+      // neighbours costs as much to check as to compute, so compute it).
+      if (penumbra) {
+        appendInterior(interval, next);
+      } else {
+        interpolated_.push_back(interval);
+      }
     }
   }
   undecided_.clear();
-  return second;
+  return next;
+}
+
+std::vector<std::size_t> IntervalPlan::thirdPass(std::span<const float> illuminance) {
+  std::vector<std::size_t> next;
+  for (const Interval& interval : checking_) {
+    const std::size_t m = (interval.a + interval.b) / 2;
+    const double ea = illuminance[interval.a], eb = illuminance[interval.b], em = illuminance[m];
+    const double t = static_cast<double>(m - interval.a) / (interval.b - interval.a);
+    const double line = ea + t * (eb - ea);
+    const double scale = std::max({std::abs(ea), std::abs(eb), std::abs(em)});
+    if (std::abs(em - line) <= kPenumbraLinearity * scale) {
+      interpolated_.push_back(Interval{interval.a, m});
+      interpolated_.push_back(Interval{m, interval.b});
+    } else {
+      for (std::size_t i = interval.a + 1; i < interval.b; ++i)
+        if (i != m) next.push_back(i);
+    }
+  }
+  checking_.clear();
+  return next;
 }
 
 void IntervalPlan::interpolate(std::span<float> values, int channels) const {

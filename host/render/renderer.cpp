@@ -44,7 +44,6 @@ struct Renderer::State {
   IlluminanceEngine illuminance;
   VisibilityEngine visibility;
   std::vector<Vec3> sourceColours;  // luminanceColour per source
-  bool colouredSources = false;     // some two sources differ in colour: E per source needed
   std::vector<Vec3> solidReflectance;
 
   State(compute::Device& d, const Scene& s, EngineOptions engine)
@@ -56,9 +55,6 @@ struct Renderer::State {
     sourceColours.clear();
     for (const Source& source : scene->sources)
       sourceColours.push_back(luminanceColour(source.color));
-    colouredSources = false;
-    for (const Vec3& c : sourceColours)
-      colouredSources |= !c.isApprox(sourceColours.front(), 1e-12);
     solidReflectance.clear();
     for (const Solid& solid : scene->solids)
       solidReflectance.push_back(solid.material >= 0 ? scene->materials[solid.material].reflectance
@@ -75,39 +71,36 @@ struct Renderer::State {
     return SamplePoint{p, face.plane.normal, face.index};
   }
 
-  // Exact illuminance and luminance for `indices` (batches of kBatch), and the shadow classes
-  // (per index position × source) for the interval plan.
-  std::vector<ShadowClass> evaluate(const Camera& camera, SampleLayer& layer,
-                                    const std::vector<std::size_t>& indices,
-                                    const std::function<void(std::size_t)>& done) {
+  // Exact illuminance and luminance at `indices` (in batches of kBatch), and each one's shadow
+  // class per source into `classes` (sample × source) for the interval plan. A source that gives
+  // a sample nothing counts as umbra there, whatever the volumes said: several occluders
+  // together can hide a source that none hides alone.
+  void evaluate(const Camera& camera, SampleLayer& layer, const std::vector<std::size_t>& indices,
+                std::vector<ShadowClass>& classes, const std::function<void(std::size_t)>& done) {
     const int sources = static_cast<int>(scene->sources.size());
-    std::vector<ShadowClass> classes(indices.size() * sources);
     std::vector<SamplePoint> points;
     for (std::size_t start = 0; start < indices.size(); start += kBatch) {
       const std::size_t end = std::min(indices.size(), start + kBatch);
       points.clear();
       for (std::size_t j = start; j < end; ++j)
         points.push_back(surfacePoint(camera, layer.visibility, indices[j]));
-      const IlluminanceResult result = illuminance.evaluate(points, colouredSources);
+      const IlluminanceResult result = illuminance.evaluate(points, true);
       for (std::size_t j = start; j < end; ++j) {
         const std::size_t i = indices[j], local = j - start;
         const Vec3& rho = solidReflectance[points[local].solid];
         Vec3 light = Vec3::Zero();  // Σ E_s · colour_s
-        if (colouredSources) {
-          for (int s = 0; s < sources; ++s)
-            light += result.bySource[local * sources + s] * sourceColours[s];
-        } else if (sources > 0) {
-          light = result.illuminance[local] * sourceColours.front();
+        for (int s = 0; s < sources; ++s) {
+          const double e = result.bySource[local * sources + s];
+          light += e * sourceColours[s];
+          classes[i * sources + s] =
+              e > 0.0 ? result.shadowClass[local * sources + s] : ShadowClass::Umbra;
         }
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
         layer.illuminance[i] = static_cast<float>(result.illuminance[local]);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
-        for (int s = 0; s < sources; ++s)
-          classes[j * sources + s] = result.shadowClass[local * sources + s];
       }
       done(end - start);
     }
-    return classes;
   }
 
   SampleLayer renderSamples(const Camera& camera, int interval, RenderStats& stats,
@@ -123,6 +116,7 @@ struct Renderer::State {
 
     start = Clock::now();
     std::vector<uint8_t> needed(n, 0);
+    std::size_t surface = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t id = layer.visibility.faceIds[i];
       if (id == FaceIdImage::kNoSurface) continue;
@@ -133,39 +127,34 @@ struct Renderer::State {
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
       } else {
         needed[i] = 1;
-        ++stats.surfaceSamples;
+        ++surface;
       }
     }
     stats.samples += n;
+    stats.surfaceSamples += surface;
     IntervalPlan plan(camera.width, camera.height, layer.visibility.faceIds, needed, interval);
     stats.shadingSeconds += secondsSince(start);
 
     start = Clock::now();
-    const std::vector<std::size_t>& first = plan.firstPass();
+    const int sources = static_cast<int>(scene->sources.size());
+    std::vector<ShadowClass> classes(n * sources, ShadowClass::Unlit);
     std::size_t done = 0;
-    // The second pass is unknown until the first is done: progress counts what is known.
-    const std::size_t expected = stats.surfaceSamples;
+    // Later rounds are unknown until the earlier ones are done: progress counts what is known.
     const auto advance = [&](std::size_t count) {
       done += count;
-      if (progress) progress(std::min(done, expected), expected);
+      if (progress) progress(std::min(done, surface), surface);
     };
-    const std::vector<ShadowClass> firstClasses = evaluate(camera, layer, first, advance);
-    const int sources = static_cast<int>(scene->sources.size());
-    // Where a sample sits in the first pass, to compare the classes of an interval's two ends.
-    std::vector<std::size_t> position(n, 0);
-    for (std::size_t j = 0; j < first.size(); ++j) position[first[j]] = j;
-    const std::vector<std::size_t> second = plan.secondPass([&](std::size_t a, std::size_t b) {
-      for (int s = 0; s < sources; ++s)
-        if (firstClasses[position[a] * sources + s] != firstClasses[position[b] * sources + s])
-          return false;
-      return true;
-    });
-    evaluate(camera, layer, second, advance);
-    stats.exactSamples += first.size() + second.size();
+    const std::vector<std::size_t>& first = plan.firstPass();
+    evaluate(camera, layer, first, classes, advance);
+    const std::vector<std::size_t> second = plan.secondPass(classes, sources);
+    evaluate(camera, layer, second, classes, advance);
+    const std::vector<std::size_t> third = plan.thirdPass(layer.illuminance);
+    evaluate(camera, layer, third, classes, advance);
+    stats.exactSamples += first.size() + second.size() + third.size();
     plan.interpolate(layer.illuminance, 1);
     plan.interpolate(layer.rgb, 3);
     stats.illuminanceSeconds += secondsSince(start);
-    if (progress) progress(expected, expected);
+    if (progress) progress(surface, surface);
     return layer;
   }
 };
