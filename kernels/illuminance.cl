@@ -228,11 +228,20 @@ bool clip_by_contact(PenumbraState* st, float3 p, float3 n, PnOccluder o,
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
  * on the contour. */
-inline bool contour_edge(int e, PnOccluder o, ulong front, float3 p, __global const int4* edges,
-                         __global const float4* overts, float3* a, float3* b) {
+inline bool faces_point(PnOccluder o, int face, float3 p, __global const float4* planes,
+                        float eps_length) {
+  float4 pl = planes[o.firstPlane + face];
+  return dot(pl.xyz, p) - pl.w > eps_length;
+}
+
+/* Whether a face sees P is tested per edge rather than kept in a bit mask, so that a solid may
+ * have any number of faces (a finely faceted sphere has hundreds). */
+inline bool contour_edge(int e, PnOccluder o, float3 p, __global const int4* edges,
+                         __global const float4* overts, __global const float4* planes,
+                         float eps_length, float3* a, float3* b) {
   int4 ed = edges[o.firstEdge + e];
-  bool left_front = (front >> ed.z) & 1UL;
-  bool right_front = (front >> ed.w) & 1UL;
+  bool left_front = faces_point(o, ed.z, p, planes, eps_length);
+  bool right_front = faces_point(o, ed.w, p, planes, eps_length);
   if (left_front == right_front) return false;
   /* Run it as the face that does not see P does: that face's loop goes from -> to when it is
    * the left face. */
@@ -410,12 +419,10 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     PnOccluder o = occluders[k];
     if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
     if (use_volumes && !in_penumbra_volume(p, o, planes, eps_length)) continue;
-    ulong front = 0;
-    for (int j = 0; j < o.planeCount; ++j) {
-      float4 pl = planes[o.firstPlane + j];
-      if (dot(pl.xyz, p) - pl.w > eps_length) front |= 1UL << j;
-    }
-    if (front == 0) {
+    bool any_front = false;
+    for (int j = 0; j < o.planeCount && !any_front; ++j)
+      any_front = faces_point(o, j, p, planes, eps_length);
+    if (!any_front) {
       if (contacts == PN_MAX_CONTACTS) {
         *error |= PN_ERROR_TOO_MANY_CONTACTS;
         break;
@@ -432,7 +439,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     int c = st.first_contour[st.na];
     for (int e = 0; e < o.edgeCount; ++e) {
       float3 ea, eb;
-      if (!contour_edge(e, o, front, p, edges, overts, &ea, &eb)) continue;
+      if (!contour_edge(e, o, p, edges, overts, planes, eps_length, &ea, &eb)) continue;
       if (c == PN_MAX_CONTOUR_EDGES) {
         *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
         break;

@@ -17,7 +17,7 @@ typedef cl_int4 pn_int4;
 
 /* Limits the kernel's private arrays are sized for; the host refuses scenes beyond them. */
 #define PN_MAX_SOURCE_VERTICES 256 /* vertices of one emitting face */
-#define PN_MAX_OCCLUDER_FACES 64   /* faces of one occluder (front faces are a 64-bit mask) */
+#define PN_MAX_OCCLUDER_FACES 4096 /* faces of one occluder (a sanity bound) */
 #define PN_MAX_ACTIVE_OCCLUDERS 64 /* occluders that can shade one point from one face */
 #define PN_MAX_VISIBLE_PIECES 32   /* visible parameter intervals on one edge */
 #define PN_MAX_CONTACTS 8          /* solids whose surface one point touches (besides its own) */

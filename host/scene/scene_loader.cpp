@@ -17,6 +17,7 @@
 #include "scene/shape_reader.hpp"
 #include "scene/source_builder.hpp"
 #include "scene/spec_reader.hpp"
+#include "scene/strongest_source.hpp"
 
 namespace penumbra {
 namespace {
@@ -55,7 +56,7 @@ double specSize(const SceneSpec& spec) {
 }
 
 Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
-  const BuildContext context{file, Tolerance::kRelativeInput * std::max(specSize(spec), 1.0)};
+  BuildContext context{file, Tolerance::kRelativeInput * std::max(specSize(spec), 1.0), {}};
   Scene scene;
   scene.file = file;
   scene.materials = spec.materials;
@@ -64,12 +65,16 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
     scene.room = std::move(built.room);
     scene.solids = std::move(built.slabs);
   }
+  // Sources before solids: a curved solid orients its facets towards the strongest source.
+  for (const SourceSpec& source : spec.sources) {
+    scene.sources.push_back(buildSource(source, scene.room, context));
+  }
+  context.towardsLight = [&](const Vec3& point) {
+    return towardsStrongestSource(scene.sources, point);
+  };
   for (const SolidSpec& solid : spec.solids) {
     scene.solids.push_back(
         Solid{solid.name, buildPolyhedron(solid.shape, solid.shapeWhere, context), solid.material});
-  }
-  for (const SourceSpec& source : spec.sources) {
-    scene.sources.push_back(buildSource(source, scene.room, context));
   }
   for (const GridSpec& grid : spec.grids) {
     scene.grids.push_back(buildGrid(grid, scene.room, context));

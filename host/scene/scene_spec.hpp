@@ -42,7 +42,22 @@ struct OpeningRefSpec {  // sources only: fills a room opening
   bool outerPlane = true;
 };
 
-using ShapeSpec = std::variant<BoxSpec, PrismSpec, HullSpec, PolygonSpec, RectSpec, OpeningRefSpec>;
+// Curved primitives (Conway & Cottingham), tessellated into convex polyhedra by shape_builder:
+// `sphere`, and `cylinder`, `cone` and `truncus`, which are all a generalised truncus.
+struct SphereSpec {
+  Vec3 center = Vec3::Zero();
+  double radius = 1.0;
+  int facets = 0;
+};
+struct TruncusSpec {
+  Vec3 center = Vec3::Zero();  // the middle of the axis
+  Vec3 axis = Vec3::UnitZ();   // end r2 → end r1; its length is the height
+  double r1 = 1.0, r2 = 1.0;
+  int facets = 0;
+};
+
+using ShapeSpec = std::variant<BoxSpec, PrismSpec, HullSpec, PolygonSpec, RectSpec, OpeningRefSpec,
+                               SphereSpec, TruncusSpec>;
 
 // ---- scene parts
 

@@ -5,8 +5,36 @@
 #include <stdexcept>
 #include <string>
 
+#include "geometry/primitives.hpp"
+
 namespace penumbra::scenefile {
 namespace {
+
+Vec3 lightAt(const BuildContext& context, const Vec3& point) {
+  return context.towardsLight ? context.towardsLight(point) : Vec3::UnitZ();
+}
+
+// The placement docs/primitives.md measured to be the better one.
+constexpr FacetPlacement kFacetPlacement = FacetPlacement::Laminae;
+
+ConvexPolyhedron buildSphere(const SphereSpec& s, const Where& where, const BuildContext& context) {
+  ConvexPolyhedron shape =
+      tessellate(SphereShape{s.center, s.radius}, s.facets, lightAt(context, s.center),
+                 kFacetPlacement, context.tolerance);
+  if (shape.empty()) context.fail(where, "the sphere is too small for the scene's tolerance");
+  return shape;
+}
+
+ConvexPolyhedron buildTruncus(const TruncusSpec& t, const Where& where,
+                              const BuildContext& context) {
+  ConvexPolyhedron shape =
+      tessellate(TruncusShape{t.center, t.axis, t.r1, t.r2}, t.facets, lightAt(context, t.center),
+                 kFacetPlacement, context.tolerance);
+  if (shape.empty()) {
+    context.fail(where, "the shape has no volume at the scene's tolerance (radius or height)");
+  }
+  return shape;
+}
 
 ConvexPolyhedron buildBox(const BoxSpec& box, const Where& where, const BuildContext& context) {
   if (((box.max - box.min).array() <= context.tolerance).any()) {
@@ -77,7 +105,8 @@ ConvexPolygon validatedPolygon(const std::vector<Vec3>& vertices, const Where& w
 
 bool isPolyhedron(const ShapeSpec& shape) {
   return std::holds_alternative<BoxSpec>(shape) || std::holds_alternative<PrismSpec>(shape) ||
-         std::holds_alternative<HullSpec>(shape);
+         std::holds_alternative<HullSpec>(shape) || std::holds_alternative<SphereSpec>(shape) ||
+         std::holds_alternative<TruncusSpec>(shape);
 }
 
 ConvexPolyhedron buildPolyhedron(const ShapeSpec& shape, const Where& where,
@@ -85,6 +114,10 @@ ConvexPolyhedron buildPolyhedron(const ShapeSpec& shape, const Where& where,
   if (const auto* box = std::get_if<BoxSpec>(&shape)) return buildBox(*box, where, context);
   if (const auto* prism = std::get_if<PrismSpec>(&shape)) return buildPrism(*prism, context);
   if (const auto* hull = std::get_if<HullSpec>(&shape)) return buildHull(*hull, where, context);
+  if (const auto* sphere = std::get_if<SphereSpec>(&shape))
+    return buildSphere(*sphere, where, context);
+  if (const auto* truncus = std::get_if<TruncusSpec>(&shape))
+    return buildTruncus(*truncus, where, context);
   throw std::logic_error("buildPolyhedron: not a polyhedron shape");
 }
 

@@ -8,9 +8,11 @@ namespace penumbra::scenefile {
 namespace {
 
 const std::vector<std::string_view>& shapeKeys(ShapeUse use) {
-  static const std::vector<std::string_view> solid{"box", "prism", "hull"};
-  static const std::vector<std::string_view> source{"opening", "rect",  "polygon",
-                                                    "box",     "prism", "hull"};
+  static const std::vector<std::string_view> solid{"box",      "prism", "hull",   "sphere",
+                                                   "cylinder", "cone",  "truncus"};
+  static const std::vector<std::string_view> source{"opening", "rect",   "polygon", "box",
+                                                    "prism",   "hull",   "sphere",  "cylinder",
+                                                    "cone",    "truncus"};
   return use == ShapeUse::Solid ? solid : source;
 }
 
@@ -78,6 +80,65 @@ OpeningRefSpec readOpeningRef(const Reader& reader, const MapView& entry, const 
   return spec;
 }
 
+// `facets: N`, a whole number; kDefaultFacets when absent.
+int readFacets(const Reader& reader, const MapView& map, int minimum) {
+  const std::optional<Field> field = map.find("facets");
+  if (!field) return kDefaultFacets;
+  const double n = reader.number(*field);
+  if (n != std::floor(n) || n < minimum || n > kMaxFacets) {
+    reader.fail(field->where, "facets is a whole number from " + std::to_string(minimum) + " to " +
+                                  std::to_string(kMaxFacets) + ", got " + formatNumber(n));
+  }
+  return static_cast<int>(n);
+}
+
+Vec3 readAxis(const Reader& reader, const MapView& map) {
+  const Field field = map.require("axis");
+  const Vec3 axis = reader.vec3(field);
+  if (axis.norm() <= 0.0) {
+    reader.fail(field.where, "the axis gives the direction and the height; it cannot be zero");
+  }
+  return axis;
+}
+
+SphereSpec readSphere(const Reader& reader, const Field& field) {
+  const MapView map = reader.map(field, "a sphere {center: [x, y, z], radius: r}");
+  map.allowOnly({"center", "radius", "facets"}, "a sphere");
+  return SphereSpec{reader.vec3(map.require("center")), reader.positive(map.require("radius"), "m"),
+                    readFacets(reader, map, 2)};
+}
+
+// cylinder and cone take one `radius`; a truncus takes r1 (at center + axis/2) and r2.
+TruncusSpec readTruncus(const Reader& reader, const Field& field, std::string_view kind) {
+  const bool general = kind == "truncus";
+  const std::string what = "a " + std::string(kind);
+  const MapView map =
+      reader.map(field, what + (general ? " {center: [x, y, z], axis: [x, y, z], r1: r, r2: r}"
+                                        : " {center: [x, y, z], axis: [x, y, z], radius: r}"));
+  if (general) {
+    map.allowOnly({"center", "axis", "r1", "r2", "facets"}, what);
+  } else {
+    map.allowOnly({"center", "axis", "radius", "facets"}, what);
+  }
+  TruncusSpec spec;
+  spec.center = reader.vec3(map.require("center"));
+  spec.axis = readAxis(reader, map);
+  if (general) {
+    spec.r1 = reader.nonNegative(map.require("r1"), "m");
+    const Field r2 = map.require("r2");
+    spec.r2 = reader.nonNegative(r2, "m");
+    if (spec.r1 == 0.0 && spec.r2 == 0.0) {
+      reader.fail(r2.where, "a truncus needs at least one radius greater than 0");
+    }
+  } else {
+    const double radius = reader.positive(map.require("radius"), "m");
+    spec.r1 = kind == "cone" ? 0.0 : radius;  // a cone's apex is at center + axis/2
+    spec.r2 = radius;
+  }
+  spec.facets = readFacets(reader, map, 3);
+  return spec;
+}
+
 }  // namespace
 
 std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse use,
@@ -113,6 +174,9 @@ std::pair<ShapeSpec, Where> readShape(const Reader& reader, const MapView& entry
   if (shapeKey == "hull") return {HullSpec{reader.points(field, 4)}, field.where};
   if (shapeKey == "rect") return {readRect(reader, field), field.where};
   if (shapeKey == "polygon") return {readPolygon(reader, entry, field), field.where};
+  if (shapeKey == "sphere") return {readSphere(reader, field), field.where};
+  if (shapeKey == "cylinder" || shapeKey == "cone" || shapeKey == "truncus")
+    return {readTruncus(reader, field, shapeKey), field.where};
   return {readOpeningRef(reader, entry, field), field.where};
 }
 
@@ -136,6 +200,14 @@ std::vector<Vec3> shapeExtentPoints(const ShapeSpec& shape) {
       return {r.center - Vec3::Constant(half), r.center + Vec3::Constant(half)};
     }
     std::vector<Vec3> operator()(const OpeningRefSpec&) const { return {}; }  // in the room
+    std::vector<Vec3> operator()(const SphereSpec& s) const {
+      return {s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)};
+    }
+    std::vector<Vec3> operator()(const TruncusSpec& t) const {
+      const Vec3 reach = Vec3::Constant(std::max(t.r1, t.r2));
+      return {t.center + 0.5 * t.axis - reach, t.center + 0.5 * t.axis + reach,
+              t.center - 0.5 * t.axis - reach, t.center - 0.5 * t.axis + reach};
+    }
   };
   return std::visit(Visitor{}, shape);
 }

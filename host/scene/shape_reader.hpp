@@ -13,6 +13,11 @@ namespace penumbra::scenefile {
 
 enum class ShapeUse { Solid, Source };
 
+// Facets of a curved primitive when `facets` is not given, and the most it may ask for (a
+// sphere of N bands has 2N² faces). The default is the measured choice of docs/primitives.md.
+inline constexpr int kDefaultFacets = 16;
+inline constexpr int kMaxFacets = 45;
+
 // The one shape key present in `entry` (e.g. "box"); none or several is an error.
 std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse use,
                             std::string_view what);
