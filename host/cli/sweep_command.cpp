@@ -44,7 +44,7 @@ int runSweepCommand(const SweepOptions& options) {
     settings.resume = options.resume;
     settings.version = kVersion;
     settings.charts = options.charts;
-    settings.plots = options.plots;
+    settings.caseOutputs = options.caseOutputs;
 
     const auto start = std::chrono::steady_clock::now();
     const Study study = loadStudy(options.study);
@@ -63,7 +63,7 @@ int runSweepCommand(const SweepOptions& options) {
                    ? fmt::format(" ({} because their inputs changed)", summary.recomputed)
                    : "",
                summary.skipped, seconds, summary.device.empty() ? "" : " · on " + summary.device);
-    if (!summary.plotsNote.empty()) fmt::print("plots: none ({})\n", summary.plotsNote);
+    for (const std::string& note : summary.outputNotes) fmt::print("{}\n", note);
     printTable(summary.table, options.output);
     return 0;
   });

@@ -2,6 +2,7 @@
 // `penumbra sweep` and `penumbra merge`: a study file in, a folder of cases, tables and charts
 // out (docs/sweeps.md). Kept free of CLI11, like grid_command.hpp.
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,8 @@ struct SweepOptions {
   std::string shard;  // "i/N"; empty: every case
   bool resume = false;
   bool quiet = false;
-  ChartWriter charts;    // set by main() when the binary has viz/
-  CasePlotWriter plots;  // likewise
+  ChartWriter charts;  // set by main() when the binary has viz/
+  std::vector<std::shared_ptr<CaseOutputWriter>> caseOutputs;  // likewise (per-case plots)
 };
 
 struct MergeOptions {
