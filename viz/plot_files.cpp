@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
 #include "output/result_files.hpp"
+#include "scene/scene_loader.hpp"
 #include "viz/colour_scale.hpp"
 #include "viz/grid_dataset.hpp"
 #include "viz/heat_map.hpp"
@@ -90,7 +92,14 @@ std::vector<std::string> plotFileNames(const RunReport& run, bool withSurfaces) 
 
 std::string plotSceneName(const fs::path& sceneFile, const ParameterValues& values) {
   const std::string name = sceneFile.filename().string();
-  return values.empty() ? name : name + " · " + describeParameters(values);
+  if (values.empty()) return name;
+  const ParameterValues defaults = loadSceneParameters(sceneFile);
+  ParameterValues changed;
+  for (const ParameterValue& p : values) {
+    const auto same = std::find(defaults.begin(), defaults.end(), p);
+    if (same == defaults.end()) changed.push_back(p);
+  }
+  return changed.empty() ? name : name + " with " + describeParameters(changed);
 }
 
 std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,

@@ -31,9 +31,10 @@ using SurfaceEngine = std::function<IlluminanceEngine&()>;
 // Told the name of what is drawn next (the command's progress lines); may be empty.
 using PlotProgress = std::function<void(const std::string& what)>;
 
-// What the titles say the pictures show: the scene file's name and, when the scene has
-// parameters, their values ("office.yaml · window_width_m = 1.6, ..."), so that a picture copied
-// out of its folder still tells which case it is.
+// What the titles say the pictures show: the scene file's name and the parameter values that
+// differ from the file's defaults ("office.yaml with window_width_m = 1.6": a `grid --set` run,
+// a sweep's case), so that a picture copied out of its folder still tells which case it is.
+// Only those: all of a scene's parameters would not fit on the line.
 std::string plotSceneName(const std::filesystem::path& sceneFile, const ParameterValues& values);
 
 // Draws every plot of `run` into the existing `directory`. `scene` is the run's scene, loaded
