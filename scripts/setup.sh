@@ -6,6 +6,10 @@
 # Safe to run again: apt is skipped when every package is present, the build is incremental.
 set -euo pipefail
 
+# Under `env -i` bash has a default PATH but does not export it; every program started from here
+# needs one (PoCL links kernels with `ld`, the Slurm test starts daemons and jobs).
+export PATH="${PATH:-/usr/local/bin:/usr/bin:/bin}"
+
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 ROOT="$(pwd)"
 BUILD="${ROOT}/build"
@@ -17,6 +21,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   libvtk9-dev xvfb xauth libmuparser-dev fonts-dejavu-core
   libopenimageio-dev openimageio-tools
+  slurm-wlm munge
 )
 
 # The step `example` runs: the example office's window-width study, a sweep of 21 cases. Its

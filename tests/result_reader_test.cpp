@@ -1,6 +1,7 @@
 // Reading a grid run back (output/result_reader.hpp) and the layout summary.json records for it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -94,6 +95,23 @@ TEST(ResultReader, SummaryRecordsTheLayoutAndTheAbsoluteScene) {
   EXPECT_THROW(gridKindFromName("plane"), std::runtime_error);
 }
 
+// `penumbra plot` rebuilds the scene of a `grid --set` run from these values (summary.json keeps
+// them by name, so the order may differ).
+TEST(ResultReader, ReadsBackTheParameterValuesOfTheRun) {
+  TempDir dir("result-reader");
+  RunReport written = awkwardRun();
+  written.parameters = {{"window_width_m", 1.6}, {"a_offset", 0.1 + 0.2}, {"zero", -0.0}};
+  writeResults(written, dir.path());
+  ParameterValues read = readResults(dir.path()).parameters;
+  ParameterValues expected = written.parameters;
+  const auto byName = [](const ParameterValue& a, const ParameterValue& b) {
+    return a.name < b.name;
+  };
+  std::sort(read.begin(), read.end(), byName);
+  std::sort(expected.begin(), expected.end(), byName);
+  EXPECT_EQ(read, expected);
+}
+
 std::string errorOf(const fs::path& dir) {
   try {
     readResults(dir);
@@ -117,6 +135,15 @@ TEST(ResultReader, MissingOrMalformedFilesAreNamed) {
 
   std::ofstream(dir.path() / "sensors.csv") << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n1,2,3,0,0,1,5,\n";
   EXPECT_NE(errorOf(dir.path()).find("1 rows, but summary.json says 2 points"), std::string::npos)
+      << errorOf(dir.path());
+
+  RunReport withParameters = awkwardRun();
+  withParameters.parameters = {{"width_m", 2.0}};
+  writeResults(withParameters, dir.path());
+  nlohmann::json summary = nlohmann::json::parse(std::ifstream(dir.path() / "summary.json"));
+  summary["parameters"]["width_m"] = "wide";
+  std::ofstream(dir.path() / "summary.json") << summary.dump();
+  EXPECT_NE(errorOf(dir.path()).find("parameters.width_m: expected a number"), std::string::npos)
       << errorOf(dir.path());
 }
 

@@ -11,6 +11,7 @@
 
 #include "scene/scene_loader.hpp"
 #include "study/case_fingerprint.hpp"
+#include "study/parameter_label.hpp"
 #include "study/results_table.hpp"
 #include "study/study_cases.hpp"
 #include "study/study_charts.hpp"
@@ -184,7 +185,7 @@ TEST(Shards, EveryNthCase) {
 TEST(StudyPlan, ACaseWithAnInvalidSceneNamesItsValues) {
   const Study s = parsed(study("  window_width_m: [2, 7]\n"));
   try {
-    planStudy(s, "kernel", false);
+    planStudy(s, "kernel", {});
     ADD_FAILURE() << "a 7 m window in a 6 m wall";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.file(), kStudyFile);
@@ -197,7 +198,7 @@ TEST(StudyPlan, ACaseWithAnInvalidSceneNamesItsValues) {
 TEST(StudyPlan, AnUnknownGrid) {
   const Study s = parsed(study("  window_width_m: [2]\n", "grids: [work-plane, desk]\n"));
   try {
-    planStudy(s, "kernel", false);
+    planStudy(s, "kernel", {});
     ADD_FAILURE() << "no grid desk";
   } catch (const SceneError& e) {
     EXPECT_EQ(e.key(), "grids");
@@ -208,19 +209,21 @@ TEST(StudyPlan, AnUnknownGrid) {
 
 TEST(StudyPlan, FingerprintsFollowWhatTheResultsDependOn) {
   const Study s = parsed(study("  window_width_m: [1.5, 2]\n", "grids: [work-plane]\n"));
-  const StudyPlan plan = planStudy(s, "kernel", false);
+  const StudyPlan plan = planStudy(s, "kernel", {});
   ASSERT_EQ(plan.layout.cases.size(), 2u);
   EXPECT_EQ(plan.layout.grids, std::vector<std::string>{"work-plane"});
   const std::string& first = plan.layout.cases[0].fingerprint;
   EXPECT_EQ(first.size(), 16u);
   EXPECT_NE(first, plan.layout.cases[1].fingerprint);
-  EXPECT_EQ(planStudy(s, "kernel", false).layout.cases[0].fingerprint, first);
-  EXPECT_NE(planStudy(s, "reference n=64", false).layout.cases[0].fingerprint, first);
-  EXPECT_NE(planStudy(s, "kernel", true).layout.cases[0].fingerprint, first);
+  EXPECT_EQ(planStudy(s, "kernel", {}).layout.cases[0].fingerprint, first);
+  EXPECT_NE(planStudy(s, "reference n=64", {}).layout.cases[0].fingerprint, first);
+  EXPECT_NE(planStudy(s, "kernel", {"plots"}).layout.cases[0].fingerprint, first);
+  EXPECT_NE(planStudy(s, "kernel", {"renders"}).layout.cases[0].fingerprint,
+            planStudy(s, "kernel", {"plots"}).layout.cases[0].fingerprint);
 
   // Formatting and comments do not count; a value does.
   const std::string scene = "penumbra: 1\nparameters: {w: 1}\nroom: {size: [\"${w + 3}\", 3, 3]}\n";
-  const CaseOutputs outputs{{}, "kernel", false};
+  const CaseOutputs outputs{{}, "kernel", {}};
   const std::string reference = caseFingerprint(parseScene(scene, "a.yaml"), outputs);
   EXPECT_EQ(caseFingerprint(parseScene("# a room\n" + scene, "b.yaml"), outputs), reference);
   EXPECT_NE(caseFingerprint(parseScene(scene, "a.yaml", {{"w", 2}}), outputs), reference);
@@ -278,6 +281,34 @@ TEST(SweepTables, SeveralGridsNameTheirColumns) {
   const std::string results = csvText(resultsTable(layout, recordsOf(layout)));
   EXPECT_EQ(results.substr(0, results.find('\n')),
             "case_id,a,b,Eavg_lx@work-plane,U0@work-plane,\"Eavg_lx@desk, top\",\"U0@desk, top\"");
+}
+
+// The unit comes from the name's last part (docs/sweeps.md): known units only, never guessed.
+TEST(SweepCharts, ParametersAreLabelledWithTheUnitTheirNameCarries) {
+  EXPECT_EQ(parameterLabel("window_width_m"), "window width [m]");
+  EXPECT_EQ(parameterLabel("panel_flux_lm"), "panel flux [lm]");
+  EXPECT_EQ(parameterLabel("sky_luminance_cdm2"), "sky luminance [cd/m²]");
+  EXPECT_EQ(parameterLabel("tilt_deg"), "tilt [°]");
+  EXPECT_EQ(parameterUnit("window_width_m"), "m");
+  // No unit suffix: unitless (a reflectance), or a last part that only looks like one.
+  EXPECT_EQ(parameterLabel("floor_reflectance"), "floor reflectance");
+  EXPECT_EQ(parameterUnit("floor_reflectance"), "");
+  EXPECT_EQ(parameterLabel("panel_count_x"), "panel count x");
+  EXPECT_EQ(parameterLabel("m"), "m");
+  EXPECT_EQ(parameterUnit("_m"), "");
+  EXPECT_EQ(parameterLabel("a"), "a");
+}
+
+TEST(SweepCharts, TheAxisOfAParameterReadsAsWordsAndUnit) {
+  StudyLayout layout = twoByThree({"work-plane"});
+  layout.parameters = {"window_width_m", "b"};
+  std::vector<CaseRecord> records = recordsOf(twoByThree({"work-plane"}));
+  for (CaseRecord& r : records) r.values[0].name = "window_width_m";
+  const std::vector<ChartFile> charts = studyCharts(layout, records);
+  ASSERT_FALSE(charts.empty());
+  EXPECT_EQ(charts[0].fileName, "Eavg_lx-vs-window_width_m.png");  // files keep the column name
+  EXPECT_EQ(charts[0].chart.xLabel, "window width [m]");
+  EXPECT_EQ(charts[0].chart.title, "Eavg [lx] vs window width [m]");
 }
 
 TEST(SweepCharts, GridCombinationsGiveOneSeriesPerOtherValue) {

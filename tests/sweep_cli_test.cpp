@@ -237,7 +237,8 @@ TEST(SweepCli, HelpTeaches) {
   const Result sweep = runPenumbra(dir.path(), "sweep --help");
   EXPECT_EQ(sweep.status, 0);
   for (const char* words : {"--shard", "--resume", "results.csv", "Eavg_lx", "design-explorer.csv",
-                            "penumbra merge", "Exit status"}) {
+                            "penumbra merge", "Exit status", "--slurm", "--shards", "--slurm-opt",
+                            "--dry-run", "sweep.sbatch", "merge.sbatch"}) {
     EXPECT_NE(sweep.out.find(words), std::string::npos) << words;
   }
   const Result merge = runPenumbra(dir.path(), "merge --help");

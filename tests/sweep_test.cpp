@@ -4,12 +4,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "scene/scene_loader.hpp"
 #include "study/study_reader.hpp"
 #include "study/sweep_runner.hpp"
+#include "sweep_scenes.hpp"
 #include "test_files.hpp"
 
 namespace penumbra {
@@ -20,14 +23,7 @@ namespace fs = std::filesystem;
 using testing::readText;
 using testing::TempDir;
 
-constexpr const char* kScene = R"(penumbra: 1
-parameters: {flux: 1000, y: 1}
-room: {size: [3, "${y + 1}", 3]}
-sources:
-  - {name: panel, rect: {center: [1.5, 1, 2.99], size: [0.5, 0.5], normal: [0, 0, -1]}, flux: "${flux}"}
-grids:
-  - {name: floor, height: 0, spacing: 0.5, margin: 0.25}
-)";
+using testing::kParameterisedRoom;
 
 constexpr const char* kStudy = R"(penumbra-study: 1
 scene: scene.yaml
@@ -43,7 +39,7 @@ void write(const fs::path& file, const std::string& text) {
 class SweepRunner : public ::testing::Test {
  protected:
   SweepRunner() : dir_("penumbra-sweep-runner") {
-    write(dir_.path() / "scene.yaml", kScene);
+    write(dir_.path() / "scene.yaml", kParameterisedRoom);
     write(dir_.path() / "study.yaml", kStudy);
     settings_.output = dir_.path() / "out";
     settings_.estimator.device = "cpu";
@@ -74,9 +70,9 @@ TEST_F(SweepRunner, RerunsSkipFinishedCasesAndRecomputeChangedOnes) {
   EXPECT_EQ(readText(out("results.csv")), table);
 
   // The scene changes under the study (a comment does not count, the panel's size does).
-  write(dir_.path() / "scene.yaml", std::string("# the same room\n") + kScene);
+  write(dir_.path() / "scene.yaml", std::string("# the same room\n") + kParameterisedRoom);
   EXPECT_EQ(run().computed, 0u);
-  std::string bigger = kScene;
+  std::string bigger = kParameterisedRoom;
   bigger.replace(bigger.find("size: [0.5, 0.5]"), 16, "size: [0.6, 0.6]");
   write(dir_.path() / "scene.yaml", bigger);
   const SweepSummary changed = run();
@@ -101,19 +97,43 @@ TEST_F(SweepRunner, ResumeNeedsARunOfTheSameStudy) {
   EXPECT_THROW(run(), std::invalid_argument);
 }
 
+// A per-case output as viz/'s plots are one: writes one file per case from the case's scene and
+// results, and lists it as an image. `why` non-empty: it cannot work here.
+class FakeOutput : public CaseOutputWriter {
+ public:
+  FakeOutput(std::string name, std::string file, std::string why = "")
+      : name_(std::move(name)), file_(std::move(file)), why_(std::move(why)) {}
+  std::string name() const override { return name_; }
+  std::string unavailable() const override { return why_; }
+  std::vector<std::string> write(const Scene& scene, const RunReport& report,
+                                 const fs::path& folder) override {
+    EXPECT_TRUE(fs::exists(folder / "summary.json"));  // the grid files come first
+    EXPECT_EQ(folder.filename().string().rfind(".case-", 0), 0u) << folder;  // staged
+    std::ofstream(folder / file_) << scene.parameters[1].value << report.grids.size();
+    ++calls;
+    return {file_};
+  }
+  int calls = 0;
+
+ private:
+  std::string name_, file_, why_;
+};
+
 TEST_F(SweepRunner, ChartsAndPlotsGoThroughTheHooks) {
   std::vector<LineChart> drawn;
   settings_.charts = [&](const LineChart& chart, const fs::path& png) {
     drawn.push_back(chart);
     std::ofstream(png) << "png";
   };
-  settings_.plots = [](const Scene& scene, const RunReport& report, const fs::path& folder) {
-    EXPECT_TRUE(fs::exists(folder / "summary.json"));  // the grid files come first
-    std::ofstream(folder / "floor-plot.png") << scene.parameters[1].value << report.grids.size();
-    return std::vector<std::string>{"floor-plot.png"};
-  };
+  const auto plots = std::make_shared<FakeOutput>("plots", "floor-plot.png");
+  // A writer the study does not ask for (renders, one day) is not called.
+  const auto renders = std::make_shared<FakeOutput>("renders", "view.exr");
+  settings_.caseOutputs = {renders, plots};
   write(dir_.path() / "study.yaml", std::string(kStudy) + "plots: true\n");
   const SweepSummary summary = run();
+  EXPECT_TRUE(summary.outputNotes.empty());
+  EXPECT_EQ(plots->calls, 6);
+  EXPECT_EQ(renders->calls, 0);
   EXPECT_EQ(summary.table.charts, 10u);  // 5 metrics × 2 varied parameters
   ASSERT_EQ(drawn.size(), 10u);
   EXPECT_EQ(drawn[0].title, "Eavg [lx] vs flux");
@@ -129,12 +149,50 @@ TEST_F(SweepRunner, ChartsAndPlotsGoThroughTheHooks) {
 
   // Without the hooks (a binary without viz/) the same study says why there are none.
   settings_.charts = {};
-  settings_.plots = {};
+  settings_.caseOutputs = {};
   fs::remove_all(out());
   const SweepSummary plain = run();
   EXPECT_EQ(plain.table.charts, 0u);
   EXPECT_NE(plain.table.chartsNote.find("without charts"), std::string::npos);
-  EXPECT_NE(plain.plotsNote.find("cannot draw them in a sweep yet"), std::string::npos);
+  ASSERT_EQ(plain.outputNotes.size(), 1u);
+  EXPECT_NE(plain.outputNotes[0].find("plots: none (this penumbra cannot write them)"),
+            std::string::npos)
+      << plain.outputNotes[0];
+}
+
+// A writer that cannot work here (no display) is left out of the whole run, and the cases are
+// recorded without it: a later run that can draw them computes every case again, with them.
+TEST_F(SweepRunner, AnOutputThatCannotBeWrittenHereIsLeftOutAndDoneLater) {
+  write(dir_.path() / "study.yaml", std::string(kStudy) + "plots: true\n");
+  const auto blind = std::make_shared<FakeOutput>("plots", "floor-plot.png", "no display");
+  settings_.caseOutputs = {blind};
+  const SweepSummary without = run();
+  EXPECT_EQ(without.computed, 6u);
+  EXPECT_EQ(blind->calls, 0);
+  EXPECT_EQ(without.outputNotes, std::vector<std::string>{"plots: none (no display)"});
+  EXPECT_FALSE(fs::exists(out("cases/case-001/floor-plot.png")));
+
+  const auto seeing = std::make_shared<FakeOutput>("plots", "floor-plot.png");
+  settings_.caseOutputs = {seeing};
+  const SweepSummary with = run();
+  EXPECT_EQ(with.recomputed, 6u);
+  EXPECT_EQ(seeing->calls, 6);
+  EXPECT_TRUE(fs::exists(out("cases/case-001/floor-plot.png")));
+  EXPECT_EQ(run().computed, 0u);  // and now they are finished with plots
+}
+
+// Two outputs listing the same image would share a column of results.csv: the case fails and
+// nothing of its folder appears.
+TEST_F(SweepRunner, TwoOutputsCannotListTheSameImage) {
+  const Scene scene = parseScene(kParameterisedRoom, dir_.path() / "scene.yaml");
+  RunReport report;
+  FakeOutput plots("plots", "same.png"), renders("renders", "same.png");
+  const fs::path folder = out("cases/case-001");
+  EXPECT_THROW(writeCaseFolder(folder, scene, report, {}, {&plots, &renders}), std::runtime_error);
+  EXPECT_FALSE(fs::exists(folder));
+  EXPECT_TRUE(!fs::exists(out("cases")) || fs::is_empty(out("cases")));
+  writeCaseFolder(folder, scene, report, {}, {&plots});
+  EXPECT_EQ(readText(folder / "same.png"), "10");
 }
 
 TEST_F(SweepRunner, MergeRefusesFoldersThatAreNotSweeps) {

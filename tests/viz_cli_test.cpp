@@ -78,6 +78,73 @@ TEST(PlotCli, PlotRedrawsAFinishedRunFromAnotherDirectory) {
   EXPECT_EQ(penumbra::testing::Png(dir.path() / "out" / "surfaces.png").width(), 600);
 }
 
+// The room with the cabinet's x as a parameter (default 5.5 m), under the same file name in
+// `dir`, so that two runs differ in nothing but the geometry they were given.
+void writeParameterisedRoom(const fs::path& dir, double cabinetDefault) {
+  fs::create_directories(dir);
+  std::string scene = sceneWithGrids();
+  const std::string box = "box: {min: [5.5, 2.8, 0.0], max: [6.0, 3.9, 1.2]}";
+  scene.replace(scene.find(box), box.size(),
+                "box: {min: [\"${cabinet_x_m}\", 2.8, 0.0], max: [\"${cabinet_x_m + 0.5}\", 3.9, "
+                "1.2]}");
+  std::ofstream(dir / "room.yaml") << "parameters: {cabinet_x_m: " << cabinetDefault << "}\n"
+                                   << scene;
+}
+
+// `grid --set ... --plot` draws the geometry it computed, whatever the scene's default: two
+// scenes that differ only in the default, run with the same --set, give the same pictures (the
+// plot once reloaded the scene with its defaults and drew the cabinet where they put it).
+TEST(PlotCli, PlotsOfASetParameterShowTheGeometryThatWasComputed) {
+  TempDir dir("viz-cli");
+  writeParameterisedRoom(dir.path() / "a", 5.5);
+  writeParameterisedRoom(dir.path() / "b", 3.0);
+  for (const char* run : {"a", "b"}) {
+    const Outcome set = penumbra(dir.path() / run,
+                                 "grid room.yaml --set cabinet_x_m=1 -o out --plot --width 600 -q");
+    ASSERT_EQ(set.status, 0) << set.err;
+  }
+  for (const char* file : {"surfaces.vtp", "surfaces.png", "work-plane.png", "work-plane.csv"}) {
+    EXPECT_EQ(readText(dir.path() / "a" / "out" / file), readText(dir.path() / "b" / "out" / file))
+        << file;
+  }
+  // The redraw by `penumbra plot` alone, too.
+  ASSERT_EQ(penumbra(dir.path() / "a", "plot out --width 600 -q").status, 0);
+  EXPECT_EQ(readText(dir.path() / "a" / "out" / "surfaces.png"),
+            readText(dir.path() / "b" / "out" / "surfaces.png"));
+}
+
+// A sweep with `plots: true` draws each case's plots as `grid --set ... --plot` draws that case
+// alone: the same pictures and ParaView files, listed as the case's images.
+TEST(PlotCli, ASweepDrawsEachCaseAsGridPlotDrawsIt) {
+  TempDir dir("viz-cli");
+  writeParameterisedRoom(dir.path(), 5.5);
+  std::ofstream(dir.path() / "study.yaml")
+      << "penumbra-study: 1\nscene: room.yaml\nparameters:\n  cabinet_x_m: [1, 3]\n"
+         "grids: [work-plane]\nplots: true\ncharts: false\n";
+  const Outcome sweep = penumbra(dir.path(), "sweep study.yaml -o sweep -q");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const Outcome alone = penumbra(
+      dir.path(), "grid room.yaml --set cabinet_x_m=3 --grid work-plane -o alone --plot -q");
+  ASSERT_EQ(alone.status, 0) << alone.err;
+  const fs::path lastCase = dir.path() / "sweep" / "cases" / "case-002";
+  for (const char* file : {"work-plane.png", "work-plane.vti", "surfaces.png", "surfaces.vtp"}) {
+    EXPECT_EQ(readText(lastCase / file), readText(dir.path() / "alone" / file)) << file;
+  }
+  const auto record = nlohmann::json::parse(readText(lastCase / "case.json"));
+  EXPECT_EQ(record["images"], nlohmann::json({"work-plane.png", "surfaces.png"}));
+  const std::string table = readText(dir.path() / "sweep" / "results.csv");
+  EXPECT_NE(table.find(",work-plane_png,surfaces_png\n"), std::string::npos) << table;
+  EXPECT_NE(table.find(",cases/case-001/work-plane.png,cases/case-001/surfaces.png\n"),
+            std::string::npos)
+      << table;
+
+  // Without a display the cases are computed without plots, and the run still succeeds.
+  const Outcome blind = penumbra(dir.path(), "sweep study.yaml -o blind -q", "env -u DISPLAY");
+  ASSERT_EQ(blind.status, 0) << blind.err;
+  EXPECT_TRUE(fs::exists(dir.path() / "blind" / "cases" / "case-002" / "case.json"));
+  EXPECT_FALSE(fs::exists(dir.path() / "blind" / "cases" / "case-002" / "work-plane.png"));
+}
+
 TEST(PlotCli, WithoutADisplayItSaysHowAndWritesNothing) {
   TempDir dir("viz-cli");
   std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();

@@ -185,7 +185,8 @@ TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
   options.device = "cpu";
   options.surfaceSpacing = 0.25;
   options.width = 800;
-  const SurfacesPlot plot = plotSurfaces(scene, options, "room.yaml", dir.path());
+  IlluminanceEngine plotEngine(*device, scene);
+  const SurfacesPlot plot = plotSurfaces(scene, plotEngine, options, "room.yaml", dir.path());
   EXPECT_TRUE(fs::exists(dir.path() / "surfaces.png"));
 
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();

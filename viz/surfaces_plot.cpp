@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "cl/device.hpp"
-#include "lighting/illuminance_engine.hpp"
 #include "viz/surface_field.hpp"
 #include "viz/surface_sampling.hpp"
 #include "viz/surfaces_view.hpp"
@@ -22,7 +20,7 @@ double surfaceLegendTop(std::vector<double> illuminance) {
   return illuminance[k];
 }
 
-SurfacesPlot plotSurfaces(const Scene& scene, const PlotOptions& options,
+SurfacesPlot plotSurfaces(const Scene& scene, IlluminanceEngine& engine, const PlotOptions& options,
                           const std::string& sceneName, const std::filesystem::path& directory) {
   SurfacesPlot result;
   result.spacing =
@@ -30,8 +28,6 @@ SurfacesPlot plotSurfaces(const Scene& scene, const PlotOptions& options,
   const SurfaceMesh mesh = sampleSurfaces(scene, result.spacing);
   result.points = mesh.points.size();
 
-  compute::Device device = compute::Device::select(options.device);
-  IlluminanceEngine engine(device, scene);
   const std::vector<double> illuminance = engine.illuminance(mesh.points);
   const vtkSmartPointer<vtkPolyData> surfaces = surfacePolyData(scene, mesh, illuminance);
   writePolyDataFile(surfaces, directory / "surfaces.vtp");

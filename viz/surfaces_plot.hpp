@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "lighting/illuminance_engine.hpp"
 #include "scene/scene.hpp"
 #include "viz/plot_options.hpp"
 
@@ -15,8 +16,9 @@ struct SurfacesPlot {
   int width = 0, height = 0;  // of the PNG, px
 };
 
-// Writes surfaces.vtp and surfaces.png into `directory`. `sceneName` goes under the title.
-SurfacesPlot plotSurfaces(const Scene& scene, const PlotOptions& options,
+// Writes surfaces.vtp and surfaces.png into `directory`. `engine` holds `scene` already (a sweep
+// keeps one engine for every case); `sceneName` goes under the title.
+SurfacesPlot plotSurfaces(const Scene& scene, IlluminanceEngine& engine, const PlotOptions& options,
                           const std::string& sceneName, const std::filesystem::path& directory);
 
 // The automatic top of the surfaces' legend: a round value at or above the 98th percentile of the

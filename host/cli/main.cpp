@@ -9,6 +9,7 @@
 #include "cli/render_options.hpp"
 #include "cli/sweep_options.hpp"
 #include "cli/version.hpp"
+#include "viz/case_plots.hpp"
 #include "viz/line_chart_writer.hpp"
 #include "viz/plot_cli.hpp"
 #include "viz/plot_command.hpp"
@@ -95,7 +96,13 @@ int main(int argc, char** argv) {
     return penumbra::runRenderCommand(render);
   }
   if (*plotCommand) return penumbra::viz::runPlotCommand(plot);
-  if (*sweepCommand) return penumbra::runSweepCommand(sweep);
+  if (*sweepCommand) {
+    // Per-case plots (`plots: true`) with the sweep's device and the plot defaults.
+    penumbra::viz::PlotOptions casePlots;
+    casePlots.device = sweep.device;
+    sweep.caseOutputs = {std::make_shared<penumbra::viz::CasePlots>(casePlots)};
+    return penumbra::runSweepCommand(sweep);
+  }
   if (*mergeCommand) return penumbra::runMergeCommand(merge);
   if (*devicesCommand) return penumbra::runDevicesCommand();
   return 1;

@@ -3,10 +3,17 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "cli/exit_status.hpp"
 #include "cli/sweep_progress.hpp"
 #include "cli/version.hpp"
+#include "cluster/process.hpp"
+#include "cluster/slurm_scripts.hpp"
+#include "cluster/slurm_submission.hpp"
 #include "output/staged_directory.hpp"
 #include "study/study_reader.hpp"
 #include "study/sweep_runner.hpp"
@@ -33,10 +40,65 @@ void printTable(const TableSummary& table, const std::filesystem::path& output) 
   }
 }
 
+std::string commandLine(const std::vector<std::string>& words) {
+  std::string text;
+  for (const std::string& w : words) {
+    const bool plain = w.find_first_of(" '\"$*?;&|<>()") == std::string::npos;
+    text += (text.empty() ? "" : " ") + (plain ? w : shellQuote(w));
+  }
+  return text;
+}
+
+// --slurm: the shards go to Slurm; this process computes nothing.
+int submitSweep(const SweepOptions& options) {
+  if (!options.shard.empty()) {
+    throw std::invalid_argument("--shard and --slurm: give --shards N, Slurm runs every shard");
+  }
+  if (options.shards == 0 && !options.resume) {
+    throw std::invalid_argument("--slurm needs --shards N (the number of array tasks)");
+  }
+  SlurmSettings settings;
+  settings.output = options.output;
+  settings.shards = options.shards;
+  for (const std::string& text : options.slurmOptions) {
+    for (std::string& word : splitShellWords(text)) settings.sbatchOptions.push_back(word);
+  }
+  settings.dryRun = options.dryRun;
+  settings.resume = options.resume;
+  settings.estimator = EstimatorOptions{options.device, options.reference, options.referenceN};
+  settings.penumbra = std::filesystem::read_symlink("/proc/self/exe");
+  const SlurmSubmission s = submitToSlurm(loadStudy(options.study), settings);
+  if (options.quiet && !options.dryRun) return 0;
+  const std::string out = normalizedTarget(options.output).string();
+  fmt::print("{}: {} cases in {} shards", options.study.string(), s.cases, s.shards);
+  if (options.resume) {
+    fmt::print("; shards to run again: {}", s.array.empty() ? "none" : arraySpec(s.array));
+  }
+  fmt::print("\n");
+  if (!s.cancelledMerge.empty()) {
+    fmt::print("cancelled the merge job {} of the last submission\n", s.cancelledMerge);
+  }
+  if (options.dryRun) {
+    fmt::print("dry run: scripts in {}/slurm; to submit them:\n", out);
+    for (const auto& command : s.commands) fmt::print("  {}\n", commandLine(command));
+    return 0;
+  }
+  if (!s.arrayJob.empty()) {
+    fmt::print("shards {}: job array {} ({})\n", arraySpec(s.array), s.arrayJob,
+               s.shardScript.string());
+  }
+  fmt::print("merge: job {}{} ({})\n", s.mergeJob,
+             s.arrayJob.empty() ? "" : ", after every shard succeeded", s.mergeScript.string());
+  fmt::print("results: {}/results.csv when job {} is done; logs in {}/slurm/logs\n", out,
+             s.mergeJob, out);
+  return 0;
+}
+
 }  // namespace
 
 int runSweepCommand(const SweepOptions& options) {
   return cli::reportingErrors([&] {
+    if (options.slurm) return submitSweep(options);
     SweepSettings settings;
     settings.output = options.output;
     if (!options.shard.empty()) settings.shard = parseShard(options.shard);
@@ -44,7 +106,7 @@ int runSweepCommand(const SweepOptions& options) {
     settings.resume = options.resume;
     settings.version = kVersion;
     settings.charts = options.charts;
-    settings.plots = options.plots;
+    settings.caseOutputs = options.caseOutputs;
 
     const auto start = std::chrono::steady_clock::now();
     const Study study = loadStudy(options.study);
@@ -63,7 +125,7 @@ int runSweepCommand(const SweepOptions& options) {
                    ? fmt::format(" ({} because their inputs changed)", summary.recomputed)
                    : "",
                summary.skipped, seconds, summary.device.empty() ? "" : " · on " + summary.device);
-    if (!summary.plotsNote.empty()) fmt::print("plots: none ({})\n", summary.plotsNote);
+    for (const std::string& note : summary.outputNotes) fmt::print("{}\n", note);
     printTable(summary.table, options.output);
     return 0;
   });

@@ -22,6 +22,25 @@ inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
                     "holds this very study; computes what is missing, rebuilds the tables");
   addEstimatorOptions(*command, options.device, options.reference, options.referenceN);
   command->add_flag("-q,--quiet", options.quiet, "No progress and no summary; errors only");
+  CLI::Option* slurm = command->add_flag(
+      "--slurm", options.slurm,
+      "Submit the study to Slurm instead of computing it: a job array of --shards tasks and a "
+      "merge job that writes results.csv into OUT when every shard succeeded (docs/cluster.md)");
+  command
+      ->add_option("--shards", options.shards, "With --slurm: the number of shards (array tasks)")
+      ->needs(slurm)
+      ->check(CLI::PositiveNumber);
+  command
+      ->add_option("--slurm-opt", options.slurmOptions,
+                   "With --slurm: options for sbatch, e.g. \"--partition=compute "
+                   "--time=00:30:00\" (repeat for more)")
+      ->needs(slurm)
+      ->allow_extra_args(false);
+  command
+      ->add_flag("--dry-run", options.dryRun,
+                 "With --slurm: write the batch scripts into OUT/slurm and print the sbatch "
+                 "commands, submit nothing")
+      ->needs(slurm);
   return command;
 }
 

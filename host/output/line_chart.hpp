@@ -13,8 +13,8 @@ struct ChartSeries {
 };
 
 struct LineChart {
-  std::string title;   // e.g. "Eavg [lx] vs window_width [m]"
-  std::string xLabel;  // with unit, e.g. "window_width [m]"
+  std::string title;   // e.g. "Eavg [lx] vs window width [m]"
+  std::string xLabel;  // with unit, e.g. "window width [m]"
   std::string yLabel;  // with unit, e.g. "Eavg [lx]"
   std::vector<ChartSeries> series;
   int width = 1200;  // px

@@ -70,6 +70,27 @@ nlohmann::json readSummary(const fs::path& file) {
   }
 }
 
+// summary.json's "parameters": the values the scene's parameters had in the run (defaults or
+// --set). Runs written before parameters existed have none: the scene then loads with its
+// defaults, which is what those runs used.
+ParameterValues readParameters(const nlohmann::json& summary, const fs::path& file) {
+  ParameterValues values;
+  if (!summary.contains("parameters")) return values;
+  const nlohmann::json& parameters = summary["parameters"];
+  if (!parameters.is_object()) {
+    throw std::runtime_error(
+        fmt::format("{}: parameters: expected an object of name: value", file.string()));
+  }
+  for (const auto& [name, value] : parameters.items()) {
+    if (!value.is_number()) {
+      throw std::runtime_error(fmt::format("{}: parameters.{}: expected a number, found {}",
+                                           file.string(), name, value.dump()));
+    }
+    values.push_back({name, value.get<double>()});
+  }
+  return values;
+}
+
 GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   GridReport grid;
   grid.name = entry.at("name").get<std::string>();
@@ -135,6 +156,7 @@ RunReport readResults(const fs::path& directory) {
     const nlohmann::json absolute = summary.value("scene_absolute", nlohmann::json(nullptr));
     run.sceneFile = absolute.is_string() ? fs::path(absolute.get<std::string>())
                                          : fs::path(summary.at("scene").get<std::string>());
+    run.parameters = readParameters(summary, directory / "summary.json");
     run.estimator = summary.value("estimator", std::string());
     run.referenceN = summary.value("reference_n", 0);
     run.device = summary.value("device", std::string());

@@ -10,7 +10,8 @@
 namespace penumbra {
 
 // The run in `directory`. The scene file is the absolute path summary.json recorded when it has
-// one, else the path as given on the command line. Metrics are recomputed from the CSV (points
+// one, else the path as given on the command line; the parameters are the values the run used
+// (load the scene with them to see what was computed). Metrics are recomputed from the CSV (points
 // inside solids left out, as the run did). Throws std::runtime_error naming the file, and the
 // line for CSV, when a file is missing or malformed.
 RunReport readResults(const std::filesystem::path& directory);

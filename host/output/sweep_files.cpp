@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <system_error>
 
@@ -38,10 +40,23 @@ void replaceFolder(const fs::path& folder, const std::function<void(const fs::pa
 }  // namespace
 
 void writeCaseFolder(const fs::path& folder, const Scene& scene, const RunReport& report,
-                     nlohmann::ordered_json caseJson, const CasePlotWriter& plots) {
+                     nlohmann::ordered_json caseJson,
+                     const std::vector<CaseOutputWriter*>& outputs) {
   replaceFolder(folder, [&](const fs::path& staging) {
     writeResultFiles(report, staging);
-    caseJson["images"] = plots ? plots(scene, report, staging) : std::vector<std::string>{};
+    std::vector<std::string> images;
+    for (CaseOutputWriter* writer : outputs) {
+      for (std::string& image : writer->write(scene, report, staging)) {
+        // One column per image name in results.csv: a second writer must not take it over.
+        if (std::find(images.begin(), images.end(), image) != images.end()) {
+          throw std::runtime_error(
+              fmt::format("{}: the {} wrote {}, which another output wrote too", folder.string(),
+                          writer->name(), image));
+        }
+        images.push_back(std::move(image));
+      }
+    }
+    caseJson["images"] = images;
     // Last: a case folder with case.json is complete (and the rename makes it appear whole).
     writeFile(staging / "case.json", [&](std::ostream& out) { out << caseJson.dump(2) << "\n"; });
   });

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "output/case_output.hpp"
 #include "output/line_chart.hpp"
 #include "output/run_report.hpp"
 #include "scene/scene.hpp"
@@ -19,23 +20,20 @@ namespace penumbra {
 
 // Draws one chart into a PNG file (viz::writeLineChart when the binary has viz/).
 using ChartWriter = std::function<void(const LineChart& chart, const std::filesystem::path& png)>;
-// Draws a case's plots into `directory`, which already holds the files of writeResultFiles, and
-// returns the files it wrote, relative to `directory`.
-using CasePlotWriter = std::function<std::vector<std::string>(
-    const Scene& scene, const RunReport& report, const std::filesystem::path& directory)>;
 
 struct ChartFile {
   LineChart chart;
   std::string fileName;  // in OUT/charts
 };
 
-// Writes one finished case into `folder` (OUT/cases/<id>): the files `penumbra grid` writes, the
-// plots (when `plots` is set), and last `case.json` (= `caseJson` with "images": the plots'
-// files). Staged in a hidden sibling and renamed at the end; a stale folder of that name is
-// removed first, and so are leftovers of killed runs of the same case.
+// Writes one finished case into `folder` (OUT/cases/<id>): the files `penumbra grid` writes, then
+// those of every writer in `outputs`, in order, and last `case.json` (= `caseJson` with
+// "images": the images the writers listed). Staged in a hidden sibling and renamed at the end; a
+// stale folder of that name is removed first, and so are leftovers of killed runs of the same
+// case. Throws std::runtime_error when two writers list the same image.
 void writeCaseFolder(const std::filesystem::path& folder, const Scene& scene,
                      const RunReport& report, nlohmann::ordered_json caseJson,
-                     const CasePlotWriter& plots);
+                     const std::vector<CaseOutputWriter*>& outputs);
 
 // Copies a finished case folder to `to` the same way (penumbra merge).
 void copyCaseFolder(const std::filesystem::path& from, const std::filesystem::path& to);

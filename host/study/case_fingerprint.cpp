@@ -49,7 +49,7 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
   Fnv1a h;
   h.add(std::string_view("penumbra case 1"));
   h.add(std::string_view(outputs.estimator));
-  h.add(outputs.plots ? 'p' : '-');
+  for (const std::string& name : outputs.files) h.add(std::string_view("output " + name));
   for (const ParameterValue& p : scene.parameters) {
     h.add(std::string_view(p.name));
     h.add(p.value);

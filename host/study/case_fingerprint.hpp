@@ -13,7 +13,7 @@ namespace penumbra {
 struct CaseOutputs {
   std::vector<std::string> grids;  // the grids computed
   std::string estimator;           // "kernel", or "reference n=64"
-  bool plots = false;
+  std::vector<std::string> files;  // the per-case outputs written (case_output.hpp): "plots"
 };
 
 // 16 hex digits (64-bit FNV-1a) over the built scene (materials, solids, sources, grid points,

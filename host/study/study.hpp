@@ -35,4 +35,12 @@ struct Study {
   bool charts = true;                // a chart of each metric against each varied parameter
 };
 
+// The per-case outputs the study asks for, by the names of their writers (case_output.hpp):
+// "plots" for `plots: true`. Renders will add theirs here.
+inline std::vector<std::string> requestedCaseOutputs(const Study& study) {
+  std::vector<std::string> names;
+  if (study.plots) names.push_back("plots");
+  return names;
+}
+
 }  // namespace penumbra

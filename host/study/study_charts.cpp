@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "output/result_files.hpp"
+#include "study/parameter_label.hpp"
 #include "study/results_table.hpp"
 
 namespace penumbra {
@@ -47,9 +48,10 @@ LineChart chartOf(const StudyLayout& layout, const std::vector<CaseRecord>& reco
                   const std::string& grid, StudyMetric metric, const std::string& x,
                   const std::vector<std::string>& varied) {
   LineChart chart;
-  chart.xLabel = x;
+  chart.xLabel = parameterLabel(x);  // "window width [m]", not the column name window_width_m
   chart.yLabel = metricLabel(metric);
-  chart.title = chart.yLabel + (layout.grids.size() > 1 ? " on " + grid : "") + " vs " + x;
+  chart.title =
+      chart.yLabel + (layout.grids.size() > 1 ? " on " + grid : "") + " vs " + chart.xLabel;
   std::vector<std::string> others;
   if (layout.combination == Combination::Grid) {
     for (const std::string& name : varied) {

@@ -52,7 +52,7 @@ std::string readText(const std::filesystem::path& file) {
 
 bool StudyLayout::sameStudy(const StudyLayout& other) const {
   if (parameters != other.parameters || combination != other.combination || grids != other.grids ||
-      metrics != other.metrics || plots != other.plots || charts != other.charts ||
+      metrics != other.metrics || caseOutputs != other.caseOutputs || charts != other.charts ||
       cases.size() != other.cases.size()) {
     return false;
   }
@@ -80,7 +80,7 @@ OrderedJson layoutJson(const StudyLayout& layout) {
       {"combination", layout.combination == Combination::Grid ? "grid" : "zip"},
       {"grids", layout.grids},
       {"metrics", metrics},
-      {"plots", layout.plots},
+      {"case_outputs", layout.caseOutputs},
       {"charts", layout.charts},
       {"cases", cases},
   };
@@ -100,7 +100,7 @@ StudyLayout layoutFromJson(const Json& json, const std::filesystem::path& file) 
       if (!metric) throw std::runtime_error(file.string() + ": unknown metric " + name.dump());
       layout.metrics.push_back(*metric);
     }
-    layout.plots = json.at("plots").get<bool>();
+    layout.caseOutputs = json.at("case_outputs").get<std::vector<std::string>>();
     layout.charts = json.at("charts").get<bool>();
     for (const Json& c : json.at("cases")) {
       layout.cases.push_back(PlannedCase{c.at("id").get<std::string>(),

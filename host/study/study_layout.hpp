@@ -28,7 +28,7 @@ struct StudyLayout {
   Combination combination = Combination::Grid;
   std::vector<std::string> grids;  // computed per case, scene order
   std::vector<StudyMetric> metrics;
-  bool plots = false;  // per-case plots were asked for and can be drawn
+  std::vector<std::string> caseOutputs;  // per-case outputs asked for and written ("plots")
   bool charts = true;
   std::vector<PlannedCase> cases;
 

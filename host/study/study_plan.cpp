@@ -1,6 +1,7 @@
 #include "study/study_plan.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "evaluation/scene_evaluation.hpp"
 #include "scene/scene_loader.hpp"
@@ -25,6 +26,10 @@ void checkGrids(const Study& study, const Scene& scene, const std::string& caseI
 
 }  // namespace
 
+std::string estimatorIdentity(const EstimatorOptions& options) {
+  return options.reference ? "reference n=" + std::to_string(options.referenceN) : "kernel";
+}
+
 Scene loadCaseScene(const Study& study, const PlannedCase& planned) {
   try {
     return loadScene(study.scene, planned.values);
@@ -35,7 +40,8 @@ Scene loadCaseScene(const Study& study, const PlannedCase& planned) {
   }
 }
 
-StudyPlan planStudy(const Study& study, const std::string& estimator, bool plots) {
+StudyPlan planStudy(const Study& study, const std::string& estimator,
+                    const std::vector<std::string>& caseOutputs) {
   StudyPlan plan;
   plan.study = study;
   StudyLayout& layout = plan.layout;
@@ -44,7 +50,7 @@ StudyPlan planStudy(const Study& study, const std::string& estimator, bool plots
   for (const StudyParameter& p : study.parameters) layout.parameters.push_back(p.name);
   layout.combination = study.combination;
   layout.metrics = study.metrics;
-  layout.plots = plots;
+  layout.caseOutputs = caseOutputs;
   layout.charts = study.charts;
   for (const StudyCase& c : studyCases(study)) {
     PlannedCase planned{c.id, c.values, ""};
@@ -54,7 +60,7 @@ StudyPlan planStudy(const Study& study, const std::string& estimator, bool plots
       for (const CalculationGrid* g : selectGrids(scene, study.grids))
         layout.grids.push_back(g->name);
     }
-    planned.fingerprint = caseFingerprint(scene, CaseOutputs{layout.grids, estimator, plots});
+    planned.fingerprint = caseFingerprint(scene, CaseOutputs{layout.grids, estimator, caseOutputs});
     layout.cases.push_back(std::move(planned));
   }
   return plan;

@@ -1,5 +1,6 @@
 #include "study/sweep_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 #include <stdexcept>
@@ -24,10 +25,6 @@ double secondsSince(Clock::time_point start) {
 
 fs::path caseFolder(const fs::path& out, const std::string& id) {
   return out / kCasesFolder / id;
-}
-
-std::string estimatorIdentity(const EstimatorOptions& options) {
-  return options.reference ? fmt::format("reference n={}", options.referenceN) : "kernel";
 }
 
 void writeLayout(const fs::path& out, const StudyLayout& layout) {
@@ -85,6 +82,31 @@ std::vector<const PlannedCase*> casesToCompute(const StudyLayout& layout, const 
   return todo;
 }
 
+// The writers of the outputs the study asks for that can work here; a note for each other one.
+std::vector<CaseOutputWriter*> chooseCaseOutputs(const Study& study, const SweepSettings& settings,
+                                                 std::vector<std::string>& notes) {
+  std::vector<CaseOutputWriter*> chosen;
+  for (const std::string& name : requestedCaseOutputs(study)) {
+    const auto it = std::find_if(
+        settings.caseOutputs.begin(), settings.caseOutputs.end(),
+        [&](const std::shared_ptr<CaseOutputWriter>& w) { return w && w->name() == name; });
+    if (it == settings.caseOutputs.end()) {
+      notes.push_back(fmt::format("{}: none (this penumbra cannot write them)", name));
+    } else if (const std::string why = (*it)->unavailable(); !why.empty()) {
+      notes.push_back(fmt::format("{}: none ({})", name, why));
+    } else {
+      chosen.push_back(it->get());
+    }
+  }
+  return chosen;
+}
+
+std::vector<std::string> namesOf(const std::vector<CaseOutputWriter*>& writers) {
+  std::vector<std::string> names;
+  for (const CaseOutputWriter* w : writers) names.push_back(w->name());
+  return names;
+}
+
 void checkResume(const SweepSettings& settings, const StudyLayout& layout) {
   const std::optional<StudyLayout> previous = readLayout(settings.output);
   if (!settings.resume) return;
@@ -104,19 +126,17 @@ void checkResume(const SweepSettings& settings, const StudyLayout& layout) {
 }  // namespace
 
 SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepObserver& observer) {
-  const bool plots = study.plots && static_cast<bool>(settings.plots);
-  const StudyPlan plan = planStudy(study, estimatorIdentity(settings.estimator), plots);
+  SweepSummary summary;
+  // Outputs that cannot be written here are left out before planning: the fingerprints then say
+  // the cases were computed without them, and a later run that can write them redoes the cases.
+  const std::vector<CaseOutputWriter*> outputs =
+      chooseCaseOutputs(study, settings, summary.outputNotes);
+  const StudyPlan plan = planStudy(study, estimatorIdentity(settings.estimator), namesOf(outputs));
   const StudyLayout& layout = plan.layout;
   checkOutputTarget(settings.output);
   checkResume(settings, layout);
 
-  SweepSummary summary;
   summary.cases = layout.cases.size();
-  if (study.plots && !plots) {
-    summary.plotsNote =
-        "per-case plots were asked for, but this penumbra cannot draw them in a "
-        "sweep yet";
-  }
   writeLayout(settings.output, layout);
   const std::vector<const PlannedCase*> todo =
       casesToCompute(layout, settings.shard, settings.output, summary);
@@ -151,8 +171,7 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
     for (const GridReport& g : report.grids) record.grids.push_back({g.name, g.metrics});
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
-    writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record),
-                    plots ? settings.plots : CasePlotWriter{});
+    writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
     ++summary.computed;
     if (stale) ++summary.recomputed;
     observer.caseFinished(record, secondsSince(start));

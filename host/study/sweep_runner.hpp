@@ -4,10 +4,12 @@
 // `penumbra merge` joins the folders of shards into one.
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "evaluation/estimator.hpp"
+#include "output/case_output.hpp"
 #include "output/sweep_files.hpp"
 #include "study/study.hpp"
 #include "study/study_cases.hpp"
@@ -29,10 +31,12 @@ struct SweepSettings {
   std::filesystem::path output;
   Shard shard;
   EstimatorOptions estimator;
-  bool resume = false;   // OUT must hold a run of this very study
-  std::string version;   // penumbra's, for each case's summary.json
-  ChartWriter charts;    // empty: no charts (a build without viz/)
-  CasePlotWriter plots;  // empty: no per-case plots
+  bool resume = false;  // OUT must hold a run of this very study
+  std::string version;  // penumbra's, for each case's summary.json
+  ChartWriter charts;   // empty: no charts (a build without viz/)
+  // The per-case output writers this binary has (case_output.hpp); a study uses those it asks for
+  // by name. Shared: the command line builds them, the runner only calls them.
+  std::vector<std::shared_ptr<CaseOutputWriter>> caseOutputs;
 };
 
 // What ended up in OUT, for the closing message.
@@ -49,7 +53,8 @@ struct SweepSummary {
   std::size_t skipped = 0;     // of this shard, finished before this run
   std::size_t recomputed = 0;  // of `computed`, cases whose old folder was stale
   std::string device;          // empty when nothing was computed
-  std::string plotsNote;       // why per-case plots were not drawn though asked for
+  // Per-case outputs asked for but not written, each "<name>: none (<why>)".
+  std::vector<std::string> outputNotes;
   TableSummary table;
 };
 

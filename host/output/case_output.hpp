@@ -1,0 +1,38 @@
+#pragma once
+// Per-case outputs of a sweep beyond the grid files: plots today (viz/), renders later. The
+// sweep runner (host/study) knows them only through this interface, so that host/ never
+// includes viz/: the command line (main.cpp) hands the runner the writers this binary has, and a
+// study asks for them by name (`plots: true` asks for "plots").
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "output/run_report.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+class CaseOutputWriter {
+ public:
+  virtual ~CaseOutputWriter() = default;
+
+  // The study key that asks for this output ("plots"). It names the output in messages, in
+  // study.json and in every case's fingerprint (a case drawn without it is not finished with it).
+  virtual std::string name() const = 0;
+
+  // Why this writer cannot work on this machine (e.g. no display for VTK), or "" when it can.
+  // Asked once before the first case: an output that cannot be written is left out of the whole
+  // run (and said so), rather than failing a sweep halfway.
+  virtual std::string unavailable() const { return ""; }
+
+  // Writes the case's files into `directory`: its staged case folder, which already holds the
+  // files `penumbra grid` writes (summary.json, <grid>.csv, ...). `scene` is the case's scene
+  // (its parameter values applied), `report` what was computed for it. Returns the images to list
+  // in results.csv, relative to `directory`. Throws std::runtime_error when it fails: the case is
+  // then not finished and nothing of it appears. Not const: a writer may keep a device or other
+  // state from one case to the next.
+  virtual std::vector<std::string> write(const Scene& scene, const RunReport& report,
+                                         const std::filesystem::path& directory) = 0;
+};
+
+}  // namespace penumbra

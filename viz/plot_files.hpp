@@ -1,0 +1,48 @@
+#pragma once
+// The plots of one finished grid run, drawn into a folder: what `penumbra plot` writes beside a
+// run's results, and what a sweep draws into each case's folder (case_plots.hpp). One function
+// for both, so that a case's plots are the very pictures `penumbra grid --set ... --plot` draws.
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "lighting/illuminance_engine.hpp"
+#include "output/run_report.hpp"
+#include "scene/scene.hpp"
+#include "viz/plot_options.hpp"
+
+namespace penumbra::viz {
+
+struct PlotFile {
+  std::string name;         // in the folder
+  std::string description;  // for the list a command prints, e.g. "work-plane.png (800 × 600 px)"
+  bool image = false;       // a PNG a person looks at (the others are ParaView files)
+};
+
+// The files a plot of `run` writes: per planar grid <stem>.png and <stem>.vti, per point list
+// <stem>.vtp, and surfaces.vtp + surfaces.png when the scene has solids. Throws
+// std::runtime_error when two would share a name (a grid called "surfaces").
+std::vector<std::string> plotFileNames(const RunReport& run, bool withSurfaces);
+
+// Gives the engine for E on the room's surfaces, holding the scene being plotted; asked only
+// when the scene has solids.
+using SurfaceEngine = std::function<IlluminanceEngine&()>;
+// Told the name of what is drawn next (the command's progress lines); may be empty.
+using PlotProgress = std::function<void(const std::string& what)>;
+
+// What the titles say the pictures show: the scene file's name and the parameter values that
+// differ from the file's defaults ("office.yaml with window_width_m = 1.6": a `grid --set` run,
+// a sweep's case), so that a picture copied out of its folder still tells which case it is.
+// Only those: all of a scene's parameters would not fit on the line.
+std::string plotSceneName(const std::filesystem::path& sceneFile, const ParameterValues& values);
+
+// Draws every plot of `run` into the existing `directory`. `scene` is the run's scene, loaded
+// with the run's parameter values. Throws std::runtime_error (clashing names, files) and
+// std::invalid_argument (options).
+std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
+                                const SurfaceEngine& surfaceEngine, const PlotOptions& options,
+                                const std::filesystem::path& directory,
+                                const PlotProgress& progress = {});
+
+}  // namespace penumbra::viz
