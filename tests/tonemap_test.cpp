@@ -131,6 +131,38 @@ TEST(ToneMap, PenumbraGradientKeepsItsRatio) {
   EXPECT_GT(std::abs(linearRatio - 4.0), 4.0 * 0.05);  // the baseline distorts it (MinRGB shift)
 }
 
+// A hard shadow inside one face (ratio 3 over one pixel, between two lattice columns), with a
+// window 3e4 brighter in view, so that Space 3 is nearly flat over the whole face. When the solve
+// gives every vertex of the face the same gain (V = k·V0), every pixel must show k·V0: the
+// shadow's edge where no vertex lies included. A gain on V3 would show it at a ratio near 1.
+TEST(ToneMap, UniformGainReproducesSpaceZeroBetweenVertices) {
+  testing::HdrScene scene{RgbImage(64, 16), FaceIdImage(64, 16)};
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      const bool window = x >= 56;
+      const double v = window ? 3e4 : (x < 29 ? 1.0 : 3.0) * (1 + 0.01 * y);
+      float* p = scene.hdr.pixel(x, y);
+      p[0] = p[1] = p[2] = static_cast<float>(v);
+      scene.faces.at(x, y) = window ? 2 : 1;
+    }
+  }
+  const DisplaySpaces spaces = displaySpaces(scene.hdr, 0.02);
+  const RegionMap regions = findRegions(scene.faces);
+  const VertexMesh mesh = buildVertexMesh(regions, 8);
+  const double gain = 0.05;  // 1 cd/m² shows at 0.05
+  Eigen::VectorXd values(mesh.vertices.size());
+  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
+    const MeshVertex& v = mesh.vertices[i];
+    values[i] = v.region == regions.at(0, 0) ? gain * spaces.value0[spaces.index(v.x, v.y)] : 1.0;
+  }
+  const ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, values);
+  for (int y = 0; y < 16; ++y) {
+    for (int x = 0; x < 56; ++x) {
+      ASSERT_NEAR(display.at(x, y), gain * scene.hdr.pixel(x, y)[0], 1e-6) << x << "," << y;
+    }
+  }
+}
+
 // The medium and strong rows are the Space-0 ratios: any multiple of Space 0 satisfies them all.
 TEST(ToneMap, ScaledSpaceZeroSatisfiesStrongAndMediumRows) {
   const testing::HdrScene scene = testing::roomView(64, 40, 3);

@@ -6,6 +6,7 @@
 #include "cli/help_text.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/sweep_options.hpp"
+#include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
 #include "viz/line_chart_writer.hpp"
 #include "viz/plot_cli.hpp"
@@ -58,6 +59,9 @@ int main(int argc, char** argv) {
         penumbra::viz::writeLineChart(chart, png);
       };
 
+  penumbra::ToneMapCommandOptions toneMap;
+  CLI::App* toneMapCommand = penumbra::cli::addToneMapCommand(app, toneMap);
+
   CLI::App* devicesCommand = app.add_subcommand("devices", penumbra::help::kDevices);
 
   penumbra::viz::PlotOptions plot;
@@ -84,6 +88,7 @@ int main(int argc, char** argv) {
   if (*plotCommand) return penumbra::viz::runPlotCommand(plot);
   if (*sweepCommand) return penumbra::runSweepCommand(sweep);
   if (*mergeCommand) return penumbra::runMergeCommand(merge);
+  if (*toneMapCommand) return penumbra::runToneMapCommand(toneMap);
   if (*devicesCommand) return penumbra::runDevicesCommand();
   return 1;
 }
