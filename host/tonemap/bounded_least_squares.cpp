@@ -64,10 +64,21 @@ struct Problem {
     return x.cwiseMax(lower).cwiseMin(upper);
   }
   double objective(const Eigen::VectorXd& x) const { return 0.5 * x.dot(q * x) - c.dot(x); }
+  // The KKT residual of a feasible x: how far a diagonally scaled gradient step moves it, after
+  // projection. 0 exactly at the solution.
+  double stationarity(const Eigen::VectorXd& x, const Eigen::VectorXd& gradient) const {
+    return (x - project(x - gradient.cwiseQuotient(diagonal))).cwiseAbs().maxCoeff();
+  }
 };
 
-// Stage 1. Returns true when the active set repeated unchanged (x is then the solution); false
-// on a cycle or at the iteration limit, with x the last iterate.
+// x in V units (display values in [LowerBound, 1]): far below what 8 bits can show.
+constexpr double kStationarity = 1e-10;
+
+// Stage 1. Returns true when x, put on its bounds, satisfies the KKT conditions; false on a
+// cycle or at the iteration limit, with x the last iterate. The KKT test, not "the active set
+// repeated", ends it: a variable on its bound with a zero multiplier is free and active at once,
+// and rounding flips such degenerate variables back and forth (a thousand of them at 1920x1080)
+// long after the solution is found.
 bool primalDualActiveSet(const Problem& p, ReducedSolver& solver, Eigen::VectorXd& x,
                          int maxIterations, int& iterations) {
   const Eigen::Index n = x.size();
@@ -91,6 +102,11 @@ bool primalDualActiveSet(const Problem& p, ReducedSolver& solver, Eigen::VectorX
       bound[i] = state[i] < 0 ? p.lower[i] : p.upper[i];
     }
     x = solver.solve(isFree, p.c, bound);
+    const Eigen::VectorXd feasible = p.project(x);
+    if (p.stationarity(feasible, p.q * feasible - p.c) <= kStationarity) {
+      x = feasible;
+      return true;
+    }
     lambda = p.q * x - p.c;
     for (Eigen::Index i = 0; i < n; ++i) {
       if (isFree[i]) lambda[i] = 0;
@@ -104,15 +120,15 @@ bool primalDualActiveSet(const Problem& p, ReducedSolver& solver, Eigen::VectorX
 bool projectedNewton(const Problem& p, ReducedSolver& solver, Eigen::VectorXd& x, int maxIterations,
                      int& iterations) {
   const Eigen::Index n = x.size();
-  constexpr double kTolerance = 1e-10, kSufficientDecrease = 1e-4;
+  constexpr double kSufficientDecrease = 1e-4;
   x = p.project(x);
   std::vector<bool> isFree(n);
   const Eigen::VectorXd zero = Eigen::VectorXd::Zero(n);
   for (iterations = 0; iterations < maxIterations; ++iterations) {
     const Eigen::VectorXd gradient = p.q * x - p.c;
     const Eigen::VectorXd scaled = gradient.cwiseQuotient(p.diagonal);
-    const double stationarity = (x - p.project(x - scaled)).cwiseAbs().maxCoeff();
-    if (stationarity <= kTolerance) return true;
+    const double stationarity = p.stationarity(x, gradient);
+    if (stationarity <= kStationarity) return true;
     const double epsilon = std::min(1e-3, stationarity);
     for (Eigen::Index i = 0; i < n; ++i) {
       isFree[i] = !((x[i] <= p.lower[i] + epsilon && gradient[i] > 0) ||

@@ -5,9 +5,10 @@
 // weak rows), so the problem is a strictly convex box-constrained QP, solved in two stages:
 //  1. the primal-dual active-set method (Hintermüller, Ito & Kunisch 2002): guess which
 //     variables sit on a bound from x - λ/diag(Q), fix them, solve the rest exactly with one
-//     sparse LDLᵀ factorisation, update λ = Qx - Aᵀb, repeat until the guess repeats. Few steps
-//     when it converges, but it is only guaranteed to for M-matrices, and the three-variable edge
-//     rows (eq. 4.22/4.24) put positive entries off Q's diagonal: on the staircase it cycles;
+//     sparse LDLᵀ factorisation, update λ = Qx - Aᵀb, repeat until x satisfies the KKT conditions.
+//     Few steps when it converges, but it is only guaranteed to for M-matrices, and the
+//     three-variable edge rows (eq. 4.22/4.24) put positive entries off Q's diagonal: on the
+//     staircase it cycles;
 //  2. so when a guess comes back (a cycle), projected Newton (Bertsekas 1982) takes over from
 //     where it stopped: the same reduced LDLᵀ solve as the step, an Armijo search along the
 //     projection arc, which decreases the objective every step and so cannot cycle.
@@ -23,8 +24,9 @@ struct BoundedLeastSquaresResult {
   Eigen::VectorXd x;                  // within [lower, upper] exactly
   int activeSetIterations = 0;        // stage 1
   int projectedNewtonIterations = 0;  // stage 2 (0 when stage 1 converged)
-  bool converged = false;  // the KKT conditions hold (stage 1: the active set repeated without
-                           // a change; stage 2: projected gradient below 1e-10)
+  // The KKT conditions hold: a diagonally scaled projected-gradient step moves x by at most
+  // 1e-10 (V units).
+  bool converged = false;
   int atLower = 0, atUpper = 0;
   int outerIterations() const { return activeSetIterations + projectedNewtonIterations; }
 };
