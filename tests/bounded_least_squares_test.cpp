@@ -36,13 +36,18 @@ TEST(BoundedLeastSquares, UnboundedOptimumIsTheLeastSquaresSolution) {
   EXPECT_EQ(result.atLower + result.atUpper, 0);
 }
 
-TEST(BoundedLeastSquares, RandomSparseProblemsMatchTheDenseOracle) {
+// Random problems with rows like the tone map's: pairs with a ratio, plus a diagonal that makes
+// it strictly convex. Both stages are checked: the active-set stage alone, and projected Newton
+// taking over after one active-set step (what happens on a cycle).
+class RandomProblems : public ::testing::TestWithParam<int> {};
+
+TEST_P(RandomProblems, MatchTheDenseOracle) {
+  const int maxActiveSetIterations = GetParam();
   std::mt19937 random(11);
   std::normal_distribution<double> normal;
   std::uniform_int_distribution<int> column(0, 39);
-  int boundsInPlay = 0;
+  int boundsInPlay = 0, projectedNewtonUsed = 0;
   for (int trial = 0; trial < 20; ++trial) {
-    // Rows like the tone map's: pairs with a ratio, plus a diagonal that makes it strictly convex.
     std::vector<Eigen::Triplet<double>> entries;
     std::vector<double> target;
     int row = 0;
@@ -63,15 +68,26 @@ TEST(BoundedLeastSquares, RandomSparseProblemsMatchTheDenseOracle) {
     const Eigen::VectorXd b = Eigen::Map<Eigen::VectorXd>(target.data(), row);
     const Eigen::VectorXd lower = Eigen::VectorXd::Constant(40, 0.05);
     const Eigen::VectorXd upper = Eigen::VectorXd::Constant(40, 1.0);
-    const auto sparse = solveBoundedLeastSquares(a, b, lower, upper, Eigen::VectorXd::Zero(40));
+    const auto sparse = solveBoundedLeastSquares(a, b, lower, upper, Eigen::VectorXd::Zero(40), 200,
+                                                 maxActiveSetIterations);
     const Eigen::VectorXd dense =
         testing::denseBoundedLeastSquares(Eigen::MatrixXd(a), b, lower, upper);
     ASSERT_TRUE(sparse.converged) << "trial " << trial;
     EXPECT_LE((sparse.x - dense).cwiseAbs().maxCoeff(), 1e-6) << "trial " << trial;
     boundsInPlay += sparse.atLower + sparse.atUpper > 0;
+    projectedNewtonUsed += sparse.projectedNewtonIterations > 0;
   }
   EXPECT_GE(boundsInPlay, 10);  // the comparison covers active bounds, not only free solutions
+  if (maxActiveSetIterations == 1) {
+    EXPECT_GE(projectedNewtonUsed, 10);
+  }
 }
+
+INSTANTIATE_TEST_SUITE_P(BoundedLeastSquares, RandomProblems, ::testing::Values(200, 1),
+                         [](const ::testing::TestParamInfo<int>& info) {
+                           return info.param == 1 ? std::string("ProjectedNewtonStage")
+                                                  : std::string("ActiveSetStage");
+                         });
 
 // The tone map's own rows on a small room (slanted edges, a window 1e4 above the walls).
 TEST(BoundedLeastSquares, ToneMapMeshesMatchTheDenseOracle) {

@@ -160,7 +160,7 @@ bool projectedNewton(const Problem& p, ReducedSolver& solver, Eigen::VectorXd& x
 BoundedLeastSquaresResult solveBoundedLeastSquares(
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
     const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, const Eigen::VectorXd& start,
-    int maxIterations) {
+    int maxIterations, int maxActiveSetIterations) {
   BoundedLeastSquaresResult result;
   result.x = start.cwiseMax(lower).cwiseMin(upper);
   if (a.cols() == 0) {
@@ -176,8 +176,9 @@ BoundedLeastSquaresResult solveBoundedLeastSquares(
   }
   const Problem problem{q, c, diagonal, lower, upper};
   ReducedSolver solver(q);
-  result.converged =
-      primalDualActiveSet(problem, solver, result.x, maxIterations, result.activeSetIterations);
+  result.converged = primalDualActiveSet(problem, solver, result.x,
+                                         std::min(maxIterations, maxActiveSetIterations),
+                                         result.activeSetIterations);
   if (!result.converged) {
     result.converged =
         projectedNewton(problem, solver, result.x, maxIterations - result.activeSetIterations,

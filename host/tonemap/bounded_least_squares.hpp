@@ -9,7 +9,8 @@
 //     Few steps when it converges, but it is only guaranteed to for M-matrices, and the
 //     three-variable edge rows (eq. 4.22/4.24) put positive entries off Q's diagonal: on the
 //     staircase it cycles;
-//  2. so when a guess comes back (a cycle), projected Newton (Bertsekas 1982) takes over from
+//  2. so when a guess comes back (a cycle), or after maxActiveSetIterations, projected Newton
+//  (Bertsekas 1982) takes over from
 //     where it stopped: the same reduced LDLᵀ solve as the step, an Armijo search along the
 //     projection arc, which decreases the objective every step and so cannot cycle.
 // The pattern of every reduced system is Q's own (fixed variables become scaled identity rows),
@@ -34,6 +35,6 @@ struct BoundedLeastSquaresResult {
 BoundedLeastSquaresResult solveBoundedLeastSquares(
     const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, const Eigen::VectorXd& b,
     const Eigen::VectorXd& lower, const Eigen::VectorXd& upper, const Eigen::VectorXd& start,
-    int maxIterations = 200);
+    int maxIterations = 200, int maxActiveSetIterations = 200);
 
 }  // namespace penumbra
