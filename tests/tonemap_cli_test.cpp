@@ -53,6 +53,17 @@ TEST(ToneMapCli, WritesThePngAndItsStatistics) {
   EXPECT_EQ(stats["converged"], true);
   EXPECT_GT(stats["outer_iterations"].get<int>(), 0);
   EXPECT_TRUE(stats["residual"].contains("strong"));
+  // Tagged as drive values in the display's own encoding (docs/tonemap.md).
+  const ImageMetadata tags = readImageMetadata(dir.path() / "view.png");
+  const auto tag = [&](const std::string& name) {
+    for (const auto& [key, value] : tags) {
+      if (key == name) return value;
+    }
+    return std::string();
+  };
+  EXPECT_EQ(tag("oiio:ColorSpace"), "sRGB");
+  EXPECT_EQ(tag("penumbra:display"), "constraint");
+  EXPECT_NE(tag("penumbra:values").find("drive values"), std::string::npos);
 }
 
 TEST(ToneMapCli, BaselinesGoThroughTheSameOutput) {
@@ -61,8 +72,9 @@ TEST(ToneMapCli, BaselinesGoThroughTheSameOutput) {
   writeRgbExr(dir.path() / "view.exr", scene.hdr);
   writeFaceIdExr(dir.path() / "faces.exr", scene.faces);
   for (const char* method : {"clip", "linear"}) {
-    const Result r = runPenumbra(dir.path(), std::string("tonemap view.exr --faces faces.exr -o ") +
-                                                 method + ".png --display " + method);
+    const Result r =
+        runPenumbra(dir.path(), std::string("tonemap view.exr --faces faces.exr -o ") + method +
+                                    ".png --display " + (method[0] == 'c' ? "CLIP" : method));
     ASSERT_EQ(r.status, 0) << r.err;
     ToneMapOptions options;
     options.method = std::string(method) == "clip" ? DisplayMethod::Clip : DisplayMethod::Linear;

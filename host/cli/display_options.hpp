@@ -1,7 +1,6 @@
 #pragma once
 // The display options shared by `penumbra tonemap` and `penumbra render`: one function, so that
 // both commands take the same flags with the same defaults and checks.
-#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -11,14 +10,15 @@
 namespace penumbra::cli {
 
 inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
-  const std::map<std::string, DisplayMethod> methods = {{"clip", DisplayMethod::Clip},
-                                                        {"linear", DisplayMethod::Linear},
-                                                        {"constraint", DisplayMethod::Constraint}};
+  // By name only (a plain enum option would also take 0, 1, 2 and print them in --help).
   command
-      .add_option("--display", options.method,
-                  "How HDR luminance becomes display values: constraint (Fang's constraint "
-                  "hierarchy, default), linear (thesis eq. 4.2), clip (auto exposure, cut)")
-      ->transform(CLI::CheckedTransformer(methods, CLI::ignore_case));
+      .add_option_function<std::string>(
+          "--display",
+          [&options](const std::string& name) { options.method = displayMethodFromName(name); },
+          "How HDR luminance becomes display values: constraint (Fang's constraint hierarchy, "
+          "default), linear (thesis eq. 4.2), clip (auto exposure, cut)")
+      ->check(CLI::IsMember({"clip", "linear", "constraint"}, CLI::ignore_case))
+      ->type_name("clip|linear|constraint");
   command
       .add_option("--black", options.black,
                   "The display's black as a fraction of its white (LowerBound)")

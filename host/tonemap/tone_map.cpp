@@ -1,5 +1,6 @@
 #include "tonemap/tone_map.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -93,6 +94,16 @@ std::string displayMethodName(DisplayMethod method) {
       return "constraint";
   }
   return "unknown";
+}
+
+DisplayMethod displayMethodFromName(const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (DisplayMethod method :
+       {DisplayMethod::Clip, DisplayMethod::Linear, DisplayMethod::Constraint}) {
+    if (displayMethodName(method) == lower) return method;
+  }
+  throw std::invalid_argument("unknown display method \"" + name + "\" (clip, linear, constraint)");
 }
 
 ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,

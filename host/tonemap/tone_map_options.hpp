@@ -10,6 +10,8 @@ namespace penumbra {
 enum class DisplayMethod { Clip, Linear, Constraint };
 
 std::string displayMethodName(DisplayMethod method);
+// "clip", "linear", "constraint" (any case); throws std::invalid_argument otherwise.
+DisplayMethod displayMethodFromName(const std::string& name);
 
 struct ToneMapOptions {
   DisplayMethod method = DisplayMethod::Constraint;
