@@ -106,6 +106,31 @@ DisplayMethod displayMethodFromName(const std::string& name) {
   throw std::invalid_argument("unknown display method \"" + name + "\" (clip, linear, constraint)");
 }
 
+namespace {
+
+// Both entry points: the spaces are computed once and handed back for the device step.
+ScalarImage displayValuesIn(const DisplaySpaces& spaces, const FaceIdImage& faces,
+                            const ToneMapOptions& options, ToneMapStats& s) {
+  s.method = displayMethodName(options.method);
+  s.black = options.black;
+  s.strong = options.strong, s.medium = options.medium, s.weak = options.weak;
+  s.lattice = options.lattice;
+  s.width = spaces.width, s.height = spaces.height;
+  const RegionMap regions = findRegions(faces);
+  s.regions = regions.count;
+  switch (options.method) {
+    case DisplayMethod::Clip:
+      return clipDisplayValues(spaces, regions);
+    case DisplayMethod::Linear:
+      return linearDisplayValues(spaces);
+    case DisplayMethod::Constraint:
+      break;
+  }
+  return constraintDisplayValues(spaces, regions, options, s);
+}
+
+}  // namespace
+
 ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
                           const ToneMapOptions& options, ToneMapStats* stats) {
   const auto start = Clock::now();
@@ -113,27 +138,7 @@ ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
   ToneMapStats local;
   ToneMapStats& s = stats ? *stats : local;
   s = ToneMapStats{};
-  s.method = displayMethodName(options.method);
-  s.black = options.black;
-  s.strong = options.strong, s.medium = options.medium, s.weak = options.weak;
-  s.lattice = options.lattice;
-  s.width = hdr.width, s.height = hdr.height;
-
-  const DisplaySpaces spaces = displaySpaces(hdr, options.black);
-  const RegionMap regions = findRegions(faces);
-  s.regions = regions.count;
-  ScalarImage display;
-  switch (options.method) {
-    case DisplayMethod::Clip:
-      display = clipDisplayValues(spaces, regions);
-      break;
-    case DisplayMethod::Linear:
-      display = linearDisplayValues(spaces);
-      break;
-    case DisplayMethod::Constraint:
-      display = constraintDisplayValues(spaces, regions, options, s);
-      break;
-  }
+  ScalarImage display = displayValuesIn(displaySpaces(hdr, options.black), faces, options, s);
   s.totalSeconds = secondsSince(start);
   return display;
 }
@@ -141,9 +146,13 @@ ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
 DisplayImage toneMap(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOptions& options,
                      ToneMapStats* stats) {
   const auto start = Clock::now();
-  const ScalarImage display = displayValues(hdr, faces, options, stats);
-  DisplayImage image = deviceImage(hdr, displaySpaces(hdr, options.black), display);
-  if (stats) stats->totalSeconds = secondsSince(start);
+  checkInputs(hdr, faces, options);
+  ToneMapStats local;
+  ToneMapStats& s = stats ? *stats : local;
+  s = ToneMapStats{};
+  const DisplaySpaces spaces = displaySpaces(hdr, options.black);
+  DisplayImage image = deviceImage(hdr, spaces, displayValuesIn(spaces, faces, options, s));
+  s.totalSeconds = secondsSince(start);
   return image;
 }
 
