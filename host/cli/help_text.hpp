@@ -148,4 +148,20 @@ inline constexpr const char* kRenderFooter =
     "Exit status: 0 done; 1 error (device, output directory, options, unknown view); 2 invalid\n"
     "scene. Nothing is written unless every view rendered.";
 
+inline constexpr const char* kToneMap =
+    "Map an HDR render to display values (PNG) with Fang's constraint hierarchy: the contrast "
+    "across every visible edge is kept, large areas drift slowly, the display's black and white "
+    "are hard limits.";
+
+inline constexpr const char* kToneMapFooter =
+    "Reads <view>.exr (linear RGB, cd/m2) and <view>.faceid.exr (which face each pixel shows)\n"
+    "as `penumbra render` writes them. Writes the PNG (8-bit drive values, tagged sRGB) and,\n"
+    "beside it, <view>.tonemap.json: variables, rows per level, outer iterations, residual per\n"
+    "level, seconds. Method and defaults: docs/tonemap.md.\n"
+    "\n"
+    "Examples:\n"
+    "  penumbra tonemap out/from-door.exr -o out/from-door.png\n"
+    "  penumbra tonemap out/from-door.exr --faces out/from-door.faceid.exr -o out/linear.png \\\n"
+    "      --display linear --black 0.05 -v";
+
 }  // namespace penumbra::help

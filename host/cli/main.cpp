@@ -8,6 +8,7 @@
 #include "cli/render_command.hpp"
 #include "cli/render_options.hpp"
 #include "cli/sweep_options.hpp"
+#include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
 #include "viz/case_plots.hpp"
 #include "viz/line_chart_writer.hpp"
@@ -67,6 +68,9 @@ int main(int argc, char** argv) {
         penumbra::viz::writeLineChart(chart, png);
       };
 
+  penumbra::ToneMapCommandOptions toneMap;
+  CLI::App* toneMapCommand = penumbra::cli::addToneMapCommand(app, toneMap);
+
   CLI::App* devicesCommand = app.add_subcommand("devices", penumbra::help::kDevices);
 
   penumbra::viz::PlotOptions plot;
@@ -104,6 +108,7 @@ int main(int argc, char** argv) {
     return penumbra::runSweepCommand(sweep);
   }
   if (*mergeCommand) return penumbra::runMergeCommand(merge);
+  if (*toneMapCommand) return penumbra::runToneMapCommand(toneMap);
   if (*devicesCommand) return penumbra::runDevicesCommand();
   return 1;
 }

@@ -1,0 +1,44 @@
+#pragma once
+// The display options shared by `penumbra tonemap` and `penumbra render`: one function, so that
+// both commands take the same flags with the same defaults and checks.
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "tonemap/tone_map_options.hpp"
+
+namespace penumbra::cli {
+
+inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
+  // By name only (a plain enum option would also take 0, 1, 2 and print them in --help).
+  command
+      .add_option_function<std::string>(
+          "--display",
+          [&options](const std::string& name) { options.method = displayMethodFromName(name); },
+          "How HDR luminance becomes display values: constraint (Fang's constraint hierarchy, "
+          "default), linear (thesis eq. 4.2), clip (auto exposure, cut)")
+      ->check(CLI::IsMember({"clip", "linear", "constraint"}, CLI::ignore_case))
+      ->type_name("clip|linear|constraint");
+  command
+      .add_option("--black", options.black,
+                  "The display's black as a fraction of its white (LowerBound)")
+      ->capture_default_str()
+      ->check(CLI::Range(1e-4, 0.5));
+  command.add_option("--strong", options.strong, "Weight of the edge-ratio rows (constraint only)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      .add_option("--medium", options.medium,
+                  "Weight of the rows inside a region (keep neighbours' ratio)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command.add_option("--weak", options.weak, "Weight of the rows that pull V to the linear map")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command
+      .add_option("--lattice", options.lattice, "Largest spacing of a region's vertices, in pixels")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 256));
+}
+
+}  // namespace penumbra::cli

@@ -1,0 +1,24 @@
+#pragma once
+// Regions from the face-id AOV: a region is one 4-connected visible part of one face (a face cut
+// in two by an occluder gives two regions, each constrained to its own neighbours). Pixels with
+// no surface belong to no region: they carry no constraint and are shown at their Space-3 value.
+#include <cstdint>
+#include <vector>
+
+#include "image/images.hpp"
+
+namespace penumbra {
+
+struct RegionMap {
+  static constexpr int32_t kNone = -1;
+  int width = 0, height = 0;
+  int count = 0;
+  std::vector<int32_t> region;  // per pixel: region index, or kNone
+
+  size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
+  int32_t at(int x, int y) const { return region[index(x, y)]; }
+};
+
+RegionMap findRegions(const FaceIdImage& faces);
+
+}  // namespace penumbra

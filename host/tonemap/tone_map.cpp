@@ -1,0 +1,159 @@
+#include "tonemap/tone_map.hpp"
+
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+#include "tonemap/baseline_maps.hpp"
+#include "tonemap/bounded_least_squares.hpp"
+#include "tonemap/constraint_system.hpp"
+#include "tonemap/display_spaces.hpp"
+#include "tonemap/region_map.hpp"
+#include "tonemap/vertex_gain_field.hpp"
+#include "tonemap/vertex_mesh.hpp"
+
+namespace penumbra {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOptions& options) {
+  if (hdr.width != faces.width || hdr.height != faces.height) {
+    throw std::invalid_argument("the face-id image is not the size of the HDR image");
+  }
+  if (options.lattice < 1) throw std::invalid_argument("--lattice must be at least 1 pixel");
+  if (!(options.strong > 0 && options.medium > 0 && options.weak > 0)) {
+    throw std::invalid_argument("the constraint weights must be positive");
+  }
+}
+
+// Root mean square and largest |residual| per level, in V units (each row divided by its weight).
+void reportResiduals(const ConstraintSystem& system, const Eigen::VectorXd& values,
+                     ToneMapStats& stats) {
+  const Eigen::VectorXd residual = system.matrix * values - system.target;
+  double sum[3] = {0, 0, 0}, largest[3] = {0, 0, 0};
+  int rows[3] = {0, 0, 0};
+  for (Eigen::Index r = 0; r < residual.size(); ++r) {
+    const int level = static_cast<int>(system.level[r]);
+    const double value = std::abs(residual[r]) / system.weight[r];
+    sum[level] += value * value;
+    largest[level] = std::max(largest[level], value);
+    ++rows[level];
+  }
+  const auto rms = [&](int level) {
+    return rows[level] ? std::sqrt(sum[level] / rows[level]) : 0.0;
+  };
+  stats.strongRows = rows[0], stats.mediumRows = rows[1], stats.weakRows = rows[2];
+  stats.strongRms = rms(0), stats.strongMax = largest[0];
+  stats.mediumRms = rms(1), stats.mediumMax = largest[1];
+  stats.weakRms = rms(2), stats.weakMax = largest[2];
+}
+
+ScalarImage constraintDisplayValues(const DisplaySpaces& spaces, const RegionMap& regions,
+                                    const ToneMapOptions& options, ToneMapStats& stats) {
+  auto start = Clock::now();
+  const VertexMesh mesh = buildVertexMesh(regions, options.lattice);
+  const ConstraintSystem system = buildConstraintSystem(
+      mesh, regions, spaces, ConstraintWeights{options.strong, options.medium, options.weak});
+  stats.variables = static_cast<int>(mesh.vertices.size());
+  stats.threeVariableRows = system.threeVariableRows;
+  stats.buildSeconds = secondsSince(start);
+
+  start = Clock::now();
+  const BoundedLeastSquaresResult solved = solveBoundedLeastSquares(
+      system.matrix, system.target, system.lower, system.upper, system.start);
+  stats.solveSeconds = secondsSince(start);
+  stats.outerIterations = solved.outerIterations();
+  stats.activeSetIterations = solved.activeSetIterations;
+  stats.projectedNewtonIterations = solved.projectedNewtonIterations;
+  stats.converged = solved.converged;
+  stats.atLowerBound = solved.atLower;
+  stats.atUpperBound = solved.atUpper;
+  reportResiduals(system, solved.x, stats);
+
+  start = Clock::now();
+  ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, solved.x);
+  stats.pixelSeconds = secondsSince(start);
+  return display;
+}
+
+}  // namespace
+
+std::string displayMethodName(DisplayMethod method) {
+  switch (method) {
+    case DisplayMethod::Clip:
+      return "clip";
+    case DisplayMethod::Linear:
+      return "linear";
+    case DisplayMethod::Constraint:
+      return "constraint";
+  }
+  return "unknown";
+}
+
+DisplayMethod displayMethodFromName(const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (DisplayMethod method :
+       {DisplayMethod::Clip, DisplayMethod::Linear, DisplayMethod::Constraint}) {
+    if (displayMethodName(method) == lower) return method;
+  }
+  throw std::invalid_argument("unknown display method \"" + name + "\" (clip, linear, constraint)");
+}
+
+namespace {
+
+// Both entry points: the spaces are computed once and handed back for the device step.
+ScalarImage displayValuesIn(const DisplaySpaces& spaces, const FaceIdImage& faces,
+                            const ToneMapOptions& options, ToneMapStats& s) {
+  s.method = displayMethodName(options.method);
+  s.black = options.black;
+  s.strong = options.strong, s.medium = options.medium, s.weak = options.weak;
+  s.lattice = options.lattice;
+  s.width = spaces.width, s.height = spaces.height;
+  const RegionMap regions = findRegions(faces);
+  s.regions = regions.count;
+  switch (options.method) {
+    case DisplayMethod::Clip:
+      return clipDisplayValues(spaces, regions);
+    case DisplayMethod::Linear:
+      return linearDisplayValues(spaces);
+    case DisplayMethod::Constraint:
+      break;
+  }
+  return constraintDisplayValues(spaces, regions, options, s);
+}
+
+}  // namespace
+
+ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
+                          const ToneMapOptions& options, ToneMapStats* stats) {
+  const auto start = Clock::now();
+  checkInputs(hdr, faces, options);
+  ToneMapStats local;
+  ToneMapStats& s = stats ? *stats : local;
+  s = ToneMapStats{};
+  ScalarImage display = displayValuesIn(displaySpaces(hdr, options.black), faces, options, s);
+  s.totalSeconds = secondsSince(start);
+  return display;
+}
+
+DisplayImage toneMap(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOptions& options,
+                     ToneMapStats* stats) {
+  const auto start = Clock::now();
+  checkInputs(hdr, faces, options);
+  ToneMapStats local;
+  ToneMapStats& s = stats ? *stats : local;
+  s = ToneMapStats{};
+  const DisplaySpaces spaces = displaySpaces(hdr, options.black);
+  DisplayImage image = deviceImage(hdr, spaces, displayValuesIn(spaces, faces, options, s));
+  s.totalSeconds = secondsSince(start);
+  return image;
+}
+
+}  // namespace penumbra

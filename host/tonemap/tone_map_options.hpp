@@ -1,0 +1,53 @@
+#pragma once
+// What the display step is asked to do (ToneMapOptions) and what it reports back (ToneMapStats).
+// Plain values: the CLI fills the options, the output layer writes the stats as JSON.
+#include <string>
+
+namespace penumbra {
+
+// clip and linear are the thesis's two straightforward maps (Fang, Fig. 4.1(b), eq. 4.2), shipped
+// beside the constraint map so that the three can be compared through the same output path.
+enum class DisplayMethod { Clip, Linear, Constraint };
+
+std::string displayMethodName(DisplayMethod method);
+// "clip", "linear", "constraint" (any case); throws std::invalid_argument otherwise.
+DisplayMethod displayMethodFromName(const std::string& name);
+
+struct ToneMapOptions {
+  DisplayMethod method = DisplayMethod::Constraint;
+  // LowerBound (eq. 4.17): the display's black as a fraction of its white. 0.02 is a screen in a
+  // dim room; the thesis measured 5-15 % with ambient light.
+  double black = 0.02;
+  // Weights of the constraint hierarchy (eq. 4.21-4.35, one weighted row each). The thesis leaves
+  // them open; these keep edge ratios (strong) over smoothness inside a region (medium) over the
+  // linear Space-3 value (weak), each level about two orders of magnitude in the squared
+  // residual, which is what the staircase test in tests/tonemap_test.cpp needs.
+  double strong = 10.0;
+  double medium = 1.0;
+  double weak = 0.1;
+  // Largest spacing in pixels between the vertices of a region (interior lattice and boundary).
+  int lattice = 8;
+};
+
+struct ToneMapStats {
+  std::string method;
+  double black = 0;
+  double strong = 0, medium = 0, weak = 0;
+  int lattice = 0;
+  int width = 0, height = 0;
+  int regions = 0;    // connected visible parts of faces
+  int variables = 0;  // vertices, one V each
+  int strongRows = 0, mediumRows = 0, weakRows = 0;
+  int threeVariableRows = 0;  // strong rows of the form eq. 4.22 / 4.24
+  int outerIterations = 0;    // factorisations: the two stages below together
+  int activeSetIterations = 0, projectedNewtonIterations = 0;
+  bool converged = true;
+  int atLowerBound = 0, atUpperBound = 0;
+  // Root mean square and largest |residual| of each level's rows, unweighted (in V units).
+  double strongRms = 0, strongMax = 0;
+  double mediumRms = 0, mediumMax = 0;
+  double weakRms = 0, weakMax = 0;
+  double buildSeconds = 0, solveSeconds = 0, pixelSeconds = 0, totalSeconds = 0;
+};
+
+}  // namespace penumbra
