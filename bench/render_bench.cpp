@@ -1,8 +1,8 @@
 // Rendering the example office (issue 4): a 1280 × 720 view on the OpenCL device for interval
 // k = 1, 4 and 8: seconds per render, Mpixel·sources/s, the share of exact samples, and the share
-// of time in visibility, illuminance, shading and output (the five files of a view). Also the
-// same visible points evaluated as one plain grid, the floor the render's illuminance part can
-// reach. Prints a table and one JSON line per k.
+// of time in visibility, illuminance, shading and output (the tone map and the files of a view).
+// Also the same visible points evaluated as one plain grid, the floor the render's illuminance part
+// can reach. Prints a table and one JSON line per k.
 //   usage: render_bench [--device cpu|gpu|<index>] [--view NAME] [--size WxH] [--repeat R]
 #include <fmt/format.h>
 
@@ -17,9 +17,9 @@
 #include "cl/device.hpp"
 #include "lighting/illuminance_engine.hpp"
 #include "output/render_files.hpp"
-#include "render/preview.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "tonemap/tone_map.hpp"
 
 namespace {
 
@@ -86,11 +86,12 @@ int main(int argc, char** argv) {
     }
     RenderReport report;
     report.interval = k;
-    report.display = "preview";
+    report.display = "constraint";
     const RenderStats stats = best.stats;
     const double output = seconds([&] {
-      DisplayImage display = linearPreview(best.luminance, best.faces);
-      report.views.push_back({std::move(best), std::move(display)});
+      ToneMapStats toneMapStats;
+      DisplayImage display = toneMap(best.luminance, best.faces, ToneMapOptions{}, &toneMapStats);
+      report.views.push_back({std::move(best), std::move(display), toneMapStats});
       writeRenders(report, out);
     });
     const double total = bestSeconds + output;

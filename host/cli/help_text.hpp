@@ -124,7 +124,9 @@ inline constexpr const char* kRenderFooter =
     "                     sources and where the view leaves the scene\n"
     "  <view>.faceid.exr  which face each pixel shows (0: none; solids' faces first, then the\n"
     "                     sources'), for the tone map and for picking\n"
-    "  <view>.png         a display copy (linear, the surfaces' 99th percentile = white, sRGB)\n"
+    "  <view>.png         the display image: the HDR luminance tone-mapped by --display\n"
+    "                     (Fang's constraint hierarchy by default; see `penumbra tonemap`)\n"
+    "  <view>.tonemap.json  the tone map's statistics (variables, rows, iterations, seconds)\n"
     "  render.json        scene, parameters, device, options, and per view its camera, the\n"
     "                     share of samples computed exactly, and the time of each stage (s)\n"
     "Each image's header records the view, the scene, its parameters and the units.\n"
@@ -144,6 +146,7 @@ inline constexpr const char* kRenderFooter =
     "  penumbra render data/office.yaml -o out/office\n"
     "  penumbra render data/office.yaml --view from-door -o out/ --interval 4 --spp 4\n"
     "  penumbra render data/office.yaml -o out/narrow --set window_width_m=1.2\n"
+    "  penumbra render data/office.yaml -o out/ --display linear --black 0.05\n"
     "\n"
     "Exit status: 0 done; 1 error (device, output directory, options, unknown view); 2 invalid\n"
     "scene. Nothing is written unless every view rendered.";

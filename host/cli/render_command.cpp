@@ -11,9 +11,9 @@
 #include "cli/version.hpp"
 #include "output/render_files.hpp"
 #include "output/staged_directory.hpp"
-#include "render/preview.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
+#include "tonemap/tone_map.hpp"
 
 namespace penumbra {
 namespace {
@@ -58,7 +58,7 @@ int run(const RenderCommandOptions& options) {
   report.device = fmt::format("{} ({}, {})", info.name, info.platform, info.type);
   report.interval = options.interval;
   report.spp = options.spp;
-  report.display = "preview: linear, 99th percentile of the surfaces' luminance = white, sRGB";
+  report.display = displayMethodName(options.display.method);
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
   }
@@ -69,8 +69,10 @@ int run(const RenderCommandOptions& options) {
                                 [&](double fraction) { progress.update(fraction); }};
     RenderedView rendered = renderer.render(*view, renderOptions);
     progress.finish();
-    DisplayImage display = linearPreview(rendered.luminance, rendered.faces);
-    report.views.push_back({std::move(rendered), std::move(display)});
+    ToneMapStats toneMapStats;
+    DisplayImage display =
+        toneMap(rendered.luminance, rendered.faces, options.display, &toneMapStats);
+    report.views.push_back({std::move(rendered), std::move(display), toneMapStats});
   }
   report.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
   writeRenders(report, options.output);

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "scene/parameters.hpp"
+#include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
 
@@ -17,6 +18,7 @@ struct RenderCommandOptions {
   std::string device = "auto";
   bool culling = true;
   ParameterValues parameters;
+  ToneMapOptions display;  // how <view>.png is made from the HDR image
   bool quiet = false;
 };
 

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/display_options.hpp"
 #include "cli/help_text.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/render_command.hpp"
@@ -60,6 +61,7 @@ inline CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options,
                    "Give a scene parameter a value other than its default: NAME=VALUE (repeat)")
       ->allow_extra_args(false)
       ->check(kParameterAssignment);
+  addDisplayOptions(*command, options.display);
   command->add_flag("-q,--quiet", options.quiet, "No progress and no summary; errors only");
   return command;
 }

@@ -8,6 +8,7 @@
 #include "output/image_files.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
+#include "output/tone_map_files.hpp"
 
 namespace penumbra {
 namespace {
@@ -60,7 +61,8 @@ nlohmann::json renderJson(const RenderReport& report) {
           {"luminance_hdr", stem + ".hdr"},
           {"illuminance_exr", stem + ".E.exr"},
           {"faceid_exr", stem + ".faceid.exr"},
-          {"display_png", stem + ".png"}}},
+          {"display_png", stem + ".png"},
+          {"tone_map_json", stem + ".tonemap.json"}}},
         {"samples", s.samples},
         {"surface_samples", s.surfaceSamples},
         {"exact_samples", s.exactSamples},
@@ -106,9 +108,8 @@ void writeRenders(const RenderReport& report, const std::filesystem::path& direc
     writeScalarExr(dir / (stem + ".E.exr"), r.illuminance, "E", viewMetadata(report, r.view, "lx"));
     writeFaceIdExr(dir / (stem + ".faceid.exr"), r.faces,
                    viewMetadata(report, r.view, "face id (0: none)"));
-    ImageMetadata png = viewMetadata(report, r.view, "display values");
-    png.emplace_back("penumbra:display", report.display);
-    writePng(dir / (stem + ".png"), files.display, png);
+    writeToneMapFiles(dir / (stem + ".png"), files.display, files.toneMap,
+                      viewMetadata(report, r.view, "display drive values"));
   }
   writeFile(dir / "render.json",
             [&](std::ostream& out) { out << renderJson(report).dump(2) << "\n"; });

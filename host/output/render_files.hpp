@@ -4,7 +4,7 @@
 //   <view>.hdr          the same as Radiance RGBE (for Radiance tools and HDR viewers)
 //   <view>.E.exr        illuminance at each pixel's visible point, channel "E", lx
 //   <view>.faceid.exr   which face each pixel shows, channel "id" (render/visible_scene.hpp)
-//   <view>.png          the display image
+//   <view>.png          the display image (host/tonemap), <view>.tonemap.json its statistics
 // and render.json: scene, parameters, device, options and per view its camera and statistics.
 // The view, scene and units are also written into each image's header ("penumbra:*").
 #include <filesystem>
@@ -16,6 +16,7 @@
 #include "image/images.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
+#include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
 
@@ -29,6 +30,7 @@ struct RenderReport {
   struct ViewFiles {
     RenderedView rendered;
     DisplayImage display;
+    ToneMapStats toneMap;  // how `display` was made
   };
   std::vector<ViewFiles> views;
   double totalSeconds = 0.0;
