@@ -15,6 +15,7 @@
 #include "cluster/slurm_scripts.hpp"
 #include "cluster/slurm_submission.hpp"
 #include "output/staged_directory.hpp"
+#include "study/case_renders.hpp"
 #include "study/study_reader.hpp"
 #include "study/sweep_runner.hpp"
 
@@ -110,6 +111,10 @@ int runSweepCommand(const SweepOptions& options) {
 
     const auto start = std::chrono::steady_clock::now();
     const Study study = loadStudy(options.study);
+    // Renders need no display: host/ writes them, on the device the grids use.
+    if (!study.renders.empty() && !options.reference) {
+      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(study.renders, options.device));
+    }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);
     const double seconds =

@@ -88,7 +88,8 @@ nlohmann::json renderJson(const RenderReport& report) {
   };
 }
 
-void writeRenders(const RenderReport& report, const std::filesystem::path& directory) {
+std::vector<std::string> writeRenderFiles(const RenderReport& report,
+                                          const std::filesystem::path& dir) {
   std::set<std::string> stems;
   for (const RenderReport::ViewFiles& files : report.views) {
     const std::string stem = viewFileStem(files.rendered.view.name);
@@ -98,8 +99,7 @@ void writeRenders(const RenderReport& report, const std::filesystem::path& direc
           stem));
     }
   }
-  StagedDirectory staged(directory);
-  const std::filesystem::path& dir = staged.staging();
+  std::vector<std::string> displays;
   for (const RenderReport::ViewFiles& files : report.views) {
     const RenderedView& r = files.rendered;
     const std::string stem = viewFileStem(r.view.name);
@@ -110,9 +110,16 @@ void writeRenders(const RenderReport& report, const std::filesystem::path& direc
                    viewMetadata(report, r.view, "face id (0: none)"));
     writeToneMapFiles(dir / (stem + ".png"), files.display, files.toneMap,
                       viewMetadata(report, r.view, "display drive values"));
+    displays.push_back(stem + ".png");
   }
   writeFile(dir / "render.json",
             [&](std::ostream& out) { out << renderJson(report).dump(2) << "\n"; });
+  return displays;
+}
+
+void writeRenders(const RenderReport& report, const std::filesystem::path& directory) {
+  StagedDirectory staged(directory);
+  writeRenderFiles(report, staged.staging());
   staged.commit();
 }
 

@@ -39,6 +39,10 @@ struct RenderReport {
 // The file name stem of a view (its name, with characters outside [A-Za-z0-9._-] replaced).
 std::string viewFileStem(const std::string& viewName);
 nlohmann::json renderJson(const RenderReport& report);
+// Writes every file into the existing `directory` as it is (a sweep's case folder is staged as a
+// whole by its caller). Returns the display images' file names.
+std::vector<std::string> writeRenderFiles(const RenderReport& report,
+                                          const std::filesystem::path& directory);
 // Writes every file into `directory` atomically (StagedDirectory): all or none.
 void writeRenders(const RenderReport& report, const std::filesystem::path& directory);
 

@@ -33,13 +33,23 @@ struct Study {
   std::vector<StudyMetric> metrics;  // table columns and charts; default all
   bool plots = false;                // per-case plots (what `penumbra grid --plot` draws)
   bool charts = true;                // a chart of each metric against each varied parameter
+  std::vector<std::string> renders;  // views of the scene to render per case; empty: none
 };
 
+// The name of the render output for `views` ("renders:from-door,plan"): the views are part of
+// the name, so a case rendered with other views is not finished for this study.
+inline std::string renderOutputName(const std::vector<std::string>& views) {
+  std::string name = "renders:";
+  for (std::size_t i = 0; i < views.size(); ++i) name += (i ? "," : "") + views[i];
+  return name;
+}
+
 // The per-case outputs the study asks for, by the names of their writers (case_output.hpp):
-// "plots" for `plots: true`. Renders will add theirs here.
+// "plots" for `plots: true`, renderOutputName(renders) for `renders: [views]`.
 inline std::vector<std::string> requestedCaseOutputs(const Study& study) {
   std::vector<std::string> names;
   if (study.plots) names.push_back("plots");
+  if (!study.renders.empty()) names.push_back(renderOutputName(study.renders));
   return names;
 }
 

@@ -67,11 +67,27 @@ std::vector<StudyMetric> readMetrics(const Reader& reader, const Field& field) {
   return metrics;
 }
 
-void checkNoRenders(const Reader& reader, const Field& field) {
-  if (field.node.IsNull() || (field.node.IsSequence() && field.node.size() == 0)) return;
-  reader.fail(field.where,
-              "renders are not available yet (HDR renders come with the renderer, a later "
-              "penumbra); remove 'renders' or leave it empty ([])");
+// `renders: [view, ...]`: views the scene declares, each once.
+std::vector<std::string> readRenders(const Reader& reader, const Field& field,
+                                     const std::filesystem::path& scene) {
+  if (field.node.IsNull()) return {};
+  std::vector<std::string> views = readNames(reader, field, "a list of view names");
+  const Scene base = loadScene(scene);
+  for (std::size_t i = 0; i < views.size(); ++i) {
+    const Where where{field.where.line, scenefile::indexKey(field.where.key, i)};
+    if (std::find(views.begin(), views.begin() + i, views[i]) != views.begin() + i) {
+      reader.fail(where, "the view '" + views[i] + "' is listed twice");
+    }
+    if (std::none_of(base.views.begin(), base.views.end(),
+                     [&](const View& v) { return v.name == views[i]; })) {
+      std::string known;
+      for (const View& v : base.views) known += (known.empty() ? "" : ", ") + v.name;
+      reader.fail(where, "the scene has no view '" + views[i] + "'; " +
+                             (known.empty() ? "it declares none (views: in the scene file)"
+                                            : "its views are: " + known));
+    }
+  }
+  return views;
 }
 
 // Every study parameter must be one the scene declares: a typo would otherwise sweep nothing.
@@ -142,7 +158,9 @@ Study parseStudy(const std::string& yamlText, const std::filesystem::path& file)
   }
   if (const std::optional<Field> p = root.find("plots")) study.plots = readFlag(reader, *p);
   if (const std::optional<Field> c = root.find("charts")) study.charts = readFlag(reader, *c);
-  if (const std::optional<Field> r = root.find("renders")) checkNoRenders(reader, *r);
+  if (const std::optional<Field> r = root.find("renders")) {
+    study.renders = readRenders(reader, *r, study.scene);
+  }
 
   checkAgainstScene(reader, study);
   return study;

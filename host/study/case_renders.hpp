@@ -1,0 +1,35 @@
+#pragma once
+// The per-case renders of a sweep (`renders: [view, ...]` in a study file): each case's views
+// rendered exactly (interval 1) and tone-mapped, written into the case's staged folder through
+// the sweep runner's output hook (output/case_output.hpp), as `penumbra render` writes them.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cl/device.hpp"
+#include "output/case_output.hpp"
+#include "render/renderer.hpp"
+#include "tonemap/tone_map_options.hpp"
+
+namespace penumbra {
+
+class CaseRenders : public CaseOutputWriter {
+ public:
+  // `device` as --device takes it; the device is opened at the first case and kept.
+  CaseRenders(std::vector<std::string> views, std::string device, ToneMapOptions display = {});
+  ~CaseRenders() override;
+
+  std::string name() const override;
+  // Returns the display PNGs, one per view.
+  std::vector<std::string> write(const Scene& scene, const RunReport& report,
+                                 const std::filesystem::path& directory) override;
+
+ private:
+  std::vector<std::string> views_;
+  std::string deviceSpec_;
+  ToneMapOptions display_;
+  std::unique_ptr<compute::Device> device_;
+  std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace penumbra
