@@ -20,7 +20,7 @@ PACKAGES=(
   libeigen3-dev libyaml-cpp-dev libcli11-dev nlohmann-json3-dev libfmt-dev libtbb-dev
   libgtest-dev libbenchmark-dev
   libvtk9-dev xvfb xauth libmuparser-dev fonts-dejavu-core
-  libopenimageio-dev openimageio-tools
+  libopenimageio-dev openimageio-tools librsvg2-bin
   slurm-wlm munge
 )
 

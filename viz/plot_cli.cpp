@@ -90,6 +90,12 @@ void addDrawingOptions(CLI::App& command, PlotOptions& options, CLI::Option* nee
                       ->check(CLI::Range(400, 8000).description(""))
                       ->type_name("PX"));
   added.push_back(command
+                      .add_option("--isobands", options.isobands,
+                                  "Also draw each planar grid as <grid>.svg: about N bands of E "
+                                  "between isolux lines, as vector polygons")
+                      ->check(CLI::Range(1, 64).description(""))
+                      ->type_name("N"));
+  added.push_back(command
                       .add_option("--surface-spacing", options.surfaceSpacing,
                                   "Distance between samples on the room's surfaces, m. Default: "
                                   "about 1/75 of the scene's size, rounded (0.1 m for an office)")

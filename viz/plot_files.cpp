@@ -11,6 +11,7 @@
 #include "viz/colour_scale.hpp"
 #include "viz/grid_dataset.hpp"
 #include "viz/heat_map.hpp"
+#include "viz/isoband_svg.hpp"
 #include "viz/isolux_lines.hpp"
 #include "viz/planar_field.hpp"
 #include "viz/surfaces_plot.hpp"
@@ -113,6 +114,19 @@ std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
   for (const GridReport& grid : run.grids) {
     if (progress) progress("plotting " + grid.name);
     plotGrid(grid, scene, options, sceneName, directory, written);
+    if (options.isobands > 0 && grid.kind != GridKind::Points) {
+      const auto planar =
+          std::find_if(scene.grids.begin(), scene.grids.end(),
+                       [&](const CalculationGrid& g) { return g.name == grid.name; });
+      if (planar == scene.grids.end()) continue;
+      const std::string svg = gridFileStem(grid.name) + ".svg";
+      const IsobandFigure figure = writeGridIsobands(*planar, grid.illuminance, surfaceEngine(),
+                                                     options.isobands, directory / svg);
+      written.push_back({svg,
+                         fmt::format("{} ({} bands, {} polygons)", svg, figure.levels.size() + 1,
+                                     figure.polygons),
+                         true});
+    }
   }
   if (withSurfaces) {
     if (progress) progress("illuminance on the room's surfaces");

@@ -29,6 +29,7 @@ struct PlotOptions {
   bool noIsolux = false;        // --isolux none
   int width = 1600;             // px, of every PNG
   double surfaceSpacing = 0.0;  // m between samples on room surfaces; 0: from the scene's size
+  int isobands = 0;             // > 0: also <grid>.svg, iso-bands of E (about this many bands)
   std::string device = "auto";  // OpenCL device for the surfaces' illuminance
   bool quiet = false;
 };

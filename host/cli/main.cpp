@@ -11,6 +11,7 @@
 #include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
 #include "viz/case_plots.hpp"
+#include "viz/isoband_svg.hpp"
 #include "viz/line_chart_writer.hpp"
 #include "viz/plot_cli.hpp"
 #include "viz/plot_command.hpp"
@@ -55,6 +56,13 @@ int main(int argc, char** argv) {
   bool renderNoCulling = false;
   CLI::App* renderCommand =
       penumbra::cli::addRenderCommand(app, render, renderSettings, renderNoCulling);
+  // The vector drawings come from viz/ (host/ never includes it).
+  render.vectorDrawing = [](const penumbra::Scene& scene, const penumbra::RenderedView& rendered,
+                            penumbra::compute::Device& device, int bands,
+                            const std::filesystem::path& folder) {
+    penumbra::IlluminanceEngine engine(device, scene);
+    penumbra::viz::writeViewIsobandFiles(scene, rendered, engine, bands, folder);
+  };
 
   penumbra::SweepOptions sweep;
   CLI::App* sweepCommand = penumbra::cli::addSweepCommand(app, sweep);

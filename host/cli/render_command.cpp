@@ -75,7 +75,14 @@ int run(const RenderCommandOptions& options) {
     report.views.push_back({std::move(rendered), std::move(display), toneMapStats});
   }
   report.totalSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-  writeRenders(report, options.output);
+  writeRenders(report, options.output, [&](const std::filesystem::path& dir) {
+    if (options.isobands <= 0 || !options.vectorDrawing) return;
+    for (const RenderReport::ViewFiles& files : report.views) {
+      if (!options.quiet)
+        fmt::print(stderr, "penumbra: view {}: iso-bands\n", files.rendered.view.name);
+      options.vectorDrawing(scene, files.rendered, device, options.isobands, dir);
+    }
+  });
   if (!options.quiet) {
     for (const RenderReport::ViewFiles& files : report.views) {
       const RenderedView& r = files.rendered;

@@ -1,10 +1,14 @@
 #pragma once
 // `penumbra render`: scene and views in, HDR images and AOVs out (output/render_files.hpp).
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
+#include "cl/device.hpp"
+#include "render/renderer.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene.hpp"
 #include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
@@ -19,6 +23,12 @@ struct RenderCommandOptions {
   bool culling = true;
   ParameterValues parameters;
   ToneMapOptions display;  // how <view>.png is made from the HDR image
+  int isobands = 0;        // > 0: also <view>.svg and <view>.isobands.png, by `vectorDrawing`
+  // Draws the iso-bands of a rendered view into a folder (viz/, wired by main.cpp: host/ never
+  // includes viz/).
+  std::function<void(const Scene&, const RenderedView&, compute::Device&, int bands,
+                     const std::filesystem::path& folder)>
+      vectorDrawing;
   bool quiet = false;
 };
 

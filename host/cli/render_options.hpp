@@ -62,6 +62,12 @@ inline CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options,
       ->allow_extra_args(false)
       ->check(kParameterAssignment);
   addDisplayOptions(*command, options.display);
+  command
+      ->add_option("--isobands", options.isobands,
+                   "Also draw each view as <view>.svg: every face split into about N bands of E "
+                   "between isolux lines, vector polygons drawn back to front")
+      ->check(CLI::Range(1, 64))
+      ->type_name("N");
   command->add_flag("-q,--quiet", options.quiet, "No progress and no summary; errors only");
   return command;
 }

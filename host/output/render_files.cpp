@@ -117,9 +117,11 @@ std::vector<std::string> writeRenderFiles(const RenderReport& report,
   return displays;
 }
 
-void writeRenders(const RenderReport& report, const std::filesystem::path& directory) {
+void writeRenders(const RenderReport& report, const std::filesystem::path& directory,
+                  const std::function<void(const std::filesystem::path&)>& more) {
   StagedDirectory staged(directory);
   writeRenderFiles(report, staged.staging());
+  if (more) more(staged.staging());
   staged.commit();
 }
 

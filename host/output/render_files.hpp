@@ -8,6 +8,7 @@
 // and render.json: scene, parameters, device, options and per view its camera and statistics.
 // The view, scene and units are also written into each image's header ("penumbra:*").
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ nlohmann::json renderJson(const RenderReport& report);
 std::vector<std::string> writeRenderFiles(const RenderReport& report,
                                           const std::filesystem::path& directory);
 // Writes every file into `directory` atomically (StagedDirectory): all or none.
-void writeRenders(const RenderReport& report, const std::filesystem::path& directory);
+// `more` may add files to the staging folder before it is committed (the vector drawings).
+void writeRenders(const RenderReport& report, const std::filesystem::path& directory,
+                  const std::function<void(const std::filesystem::path&)>& more = {});
 
 }  // namespace penumbra
