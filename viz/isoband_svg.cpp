@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <stdexcept>
 
 #include "geometry/face_outside_solids.hpp"
@@ -97,21 +98,98 @@ std::string surfaceSvg(const IsoBands& bands, const std::vector<Vec3>& outline, 
     out += fmt::format("<polygon points=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"0.6\"/>\n",
                        pointsAttribute(points), colour, colour);
   }
-  for (const IsoBandPolygon& polygon : bands.polygons) {
-    if (polygon.band == common) continue;
-    std::vector<Point2> points;
-    for (const Vec3& v : polygon.vertices) points.push_back(project(v));
-    const std::string colour = bandColour(polygon.band, bandCount);
-    // The stroke in the fill's colour closes the hairline gaps renderers leave between polygons.
-    out += fmt::format("<polygon points=\"{}\" fill=\"{}\" stroke=\"{}\" stroke-width=\"0.6\"/>\n",
-                       pointsAttribute(points), colour, colour);
-  }
-  for (const auto& segment : bands.contourSegments) {
-    const Point2 a = project(segment[0]), b = project(segment[1]);
+  // Every other band as one path: its polygons' edges that no other polygon of the band shares
+  // (the band's outline, holes included), chained into loops and filled even-odd. So the size
+  // of the drawing follows the bands and their outlines, not the mesh.
+  using Key = std::array<double, 3>;
+  const auto key = [](const Vec3& v) { return Key{v.x(), v.y(), v.z()}; };
+  for (int band = 0; band < bandCount; ++band) {
+    if (band == common || count[band] == 0) continue;
+    std::map<std::pair<Key, Key>, int> edges;  // directed edge → times seen
+    std::map<Key, Vec3> at;
+    for (const IsoBandPolygon& polygon : bands.polygons) {
+      if (polygon.band != band) continue;
+      const auto& v = polygon.vertices;
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        const Key a = key(v[i]), b = key(v[(i + 1) % v.size()]);
+        if (a == b) continue;
+        at[a] = v[i];
+        // An edge two polygons share runs both ways: both go.
+        if (const auto back = edges.find({b, a}); back != edges.end()) {
+          if (--back->second == 0) edges.erase(back);
+        } else {
+          ++edges[{a, b}];
+        }
+      }
+    }
+    std::multimap<Key, Key> next;
+    for (const auto& [edge, times] : edges)
+      for (int t = 0; t < times; ++t) next.emplace(edge.first, edge.second);
+    std::string path;
+    while (!next.empty()) {
+      auto it = next.begin();
+      const Key start = it->first;
+      Key current = start;
+      const Point2 p0 = project(at[start]);
+      path += fmt::format("M{:.2f},{:.2f}", p0.x, p0.y);
+      while (it != next.end()) {
+        current = it->second;
+        next.erase(it);
+        if (current == start) break;
+        const Point2 p = project(at[current]);
+        path += fmt::format("L{:.2f},{:.2f}", p.x, p.y);
+        it = next.find(current);
+      }
+      path += "Z";
+    }
+    const std::string colour = bandColour(band, bandCount);
+    // The stroke in the fill's colour closes the hairline gaps renderers leave between shapes.
     out += fmt::format(
-        "<line x1=\"{:.2f}\" y1=\"{:.2f}\" x2=\"{:.2f}\" y2=\"{:.2f}\" stroke=\"#1e1e1e\" "
-        "stroke-width=\"0.7\" stroke-opacity=\"0.7\"/>\n",
-        a.x, a.y, b.x, b.y);
+        "<path d=\"{}\" fill=\"{}\" fill-rule=\"evenodd\" stroke=\"{}\" stroke-width=\"0.6\"/>\n",
+        path, colour, colour);
+  }
+  // The isolux lines: their pieces (one per triangle) chained end to end into one path.
+  std::multimap<Key, std::size_t> ends;
+  const auto& segments = bands.contourSegments;
+  for (std::size_t s = 0; s < segments.size(); ++s) {
+    ends.emplace(key(segments[s][0]), s);
+    ends.emplace(key(segments[s][1]), s);
+  }
+  std::vector<bool> used(segments.size(), false);
+  const auto take = [&](const Vec3& from, std::size_t& s) {  // an unused piece ending at `from`
+    const auto [lo, hi] = ends.equal_range(key(from));
+    for (auto it = lo; it != hi; ++it)
+      if (!used[it->second]) {
+        s = it->second;
+        return true;
+      }
+    return false;
+  };
+  std::string lines;
+  for (std::size_t first = 0; first < segments.size(); ++first) {
+    if (used[first]) continue;
+    used[first] = true;
+    // Walk back to one end of the chain, then draw it forwards.
+    std::vector<Vec3> chain{segments[first][0], segments[first][1]};
+    for (std::size_t s; take(chain.back(), s);) {
+      used[s] = true;
+      chain.push_back(key(segments[s][0]) == key(chain.back()) ? segments[s][1] : segments[s][0]);
+    }
+    for (std::size_t s; take(chain.front(), s);) {
+      used[s] = true;
+      chain.insert(chain.begin(),
+                   key(segments[s][0]) == key(chain.front()) ? segments[s][1] : segments[s][0]);
+    }
+    for (std::size_t i = 0; i < chain.size(); ++i) {
+      const Point2 p = project(chain[i]);
+      lines += fmt::format("{}{:.2f},{:.2f}", i == 0 ? "M" : "L", p.x, p.y);
+    }
+  }
+  if (!lines.empty()) {
+    out += fmt::format(
+        "<path d=\"{}\" fill=\"none\" stroke=\"#1e1e1e\" stroke-width=\"0.7\" "
+        "stroke-opacity=\"0.7\"/>\n",
+        lines);
   }
   return out + "</g>\n";
 }
