@@ -7,12 +7,15 @@
 #include "cli/option_checks.hpp"
 #include "cli/sweep_options.hpp"
 #include "cli/version.hpp"
+#include "output/interrupt_cleanup.hpp"
 #include "viz/line_chart_writer.hpp"
 #include "viz/plot_cli.hpp"
 #include "viz/plot_command.hpp"
 #include "viz/render_png.hpp"
 
 int main(int argc, char** argv) {
+  // Before any thread starts: Ctrl-C or SIGTERM then leaves no staging directory behind.
+  penumbra::removeStagingOnInterrupt();
   CLI::App app{penumbra::help::kProgram, "penumbra"};
   app.footer(penumbra::help::kProgramFooter);
   app.set_version_flag("--version", std::string("penumbra ") + penumbra::kVersion);
