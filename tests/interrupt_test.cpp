@@ -89,7 +89,7 @@ class Interrupt : public ::testing::TestWithParam<int> {};
 TEST_P(Interrupt, WhileWritingANewFolderLeavesNothing) {
   const int signal = GetParam();
   TempDir dir("penumbra-interrupt");
-  write(dir.path() / "scene.yaml", scene(0.004));  // 1500 × 1000 points
+  write(dir.path() / "scene.yaml", scene(0.008));  // 750 × 500 points: writing takes a while
   const int status = interruptWhileWriting(dir.path(), signal, [](const fs::path& d, pid_t pid) {
     return d / fmt::format(".out.partial-{}", pid);
   });
@@ -109,7 +109,7 @@ TEST_P(Interrupt, WhileRewritingAFolderLeavesThePreviousFilesIntact) {
   const std::map<std::string, std::string> before = filesIn(dir.path() / "out");
   ASSERT_GE(before.size(), 2u);
 
-  write(dir.path() / "scene.yaml", scene(0.004));
+  write(dir.path() / "scene.yaml", scene(0.008));
   const int status = interruptWhileWriting(dir.path(), signal, [](const fs::path& d, pid_t pid) {
     return d / "out" / fmt::format(".penumbra.partial-{}", pid);
   });
@@ -125,7 +125,7 @@ TEST_P(Interrupt, WhileRewritingAFolderLeavesThePreviousFilesIntact) {
 TEST_P(Interrupt, WhileComputingLeavesNothing) {
   const int signal = GetParam();
   TempDir dir("penumbra-interrupt");
-  write(dir.path() / "scene.yaml", scene(0.004));
+  write(dir.path() / "scene.yaml", scene(0.004));  // 1500 × 1000 points: still computing at 300 ms
   PenumbraProcess run(dir.path(), {"grid", "scene.yaml", "-o", "sub/out", "--device", "cpu", "-q"});
   ASSERT_TRUE(run.started());
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
