@@ -48,8 +48,9 @@ int main(int argc, char** argv) {
     bench::checkDegenerateCase(bench::DegenerateGenerator::make(seed, i, thin), engine, open,
                                referenceN, figures);
     if ((i - first + 1) % 500 == 0) {
-      fmt::print(stderr, "degenerate_stress: {} / {} configurations, {} failed points\n",
-                 i - first + 1, configurations, figures.failed());
+      fmt::print(
+          stderr, "degenerate_stress: {} / {} configurations, {} points, {} failed, worst {:.3e}\n",
+          i - first + 1, configurations, figures.points, figures.failed(), figures.worstRelative);
     }
   }
   for (const std::string& f : figures.failures) fmt::print("FAIL {}\n", f);

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Installs what penumbra needs (Debian 12), builds it, and runs one step:
 #   bash scripts/setup.sh example   the main job on the bundled example scene
-#   bash scripts/setup.sh test      every test through ctest
+#   bash scripts/setup.sh test      every test through ctest, then the host-side tests under
+#                                   ASan + UBSan and a minute of fuzzing (build-sanitize,
+#                                   clang-14; docs/reliability.md)
 #   bash scripts/setup.sh build     only install + build
 # Safe to run again: apt is skipped when every package is present, the build is incremental.
 set -euo pipefail
@@ -17,6 +19,7 @@ PACKAGES=(
   libgtest-dev libbenchmark-dev
   libvtk9-dev xvfb xauth libmuparser-dev fonts-dejavu-core
   libopenimageio-dev openimageio-tools
+  clang-14 libfuzzer-14-dev libclang-rt-14-dev
 )
 
 # The step `example` runs: the example office's window-width study, a sweep of 21 cases. Its
@@ -74,6 +77,23 @@ build() {
   cmake --build "${BUILD}" -j"$(nproc)"
 }
 
+# The reliability build (docs/reliability.md): clang-14 with ASan + UBSan and libFuzzer's
+# coverage, in a build of its own. It runs the host-side tests (all but viz/, which renders
+# through X) and then each fuzz target for a while: a minute in all.
+reliability_tests() {
+  local dir="${ROOT}/build-sanitize" targets=(penumbra scene_fuzz pts_fuzz study_fuzz) source
+  for source in "${ROOT}"/tests/*_test.cpp; do
+    [[ "$(basename "${source}")" == viz_* ]] || targets+=("$(basename "${source}" .cpp)")
+  done
+  CC=clang-14 CXX=clang++-14 cmake -S "${ROOT}" -B "${dir}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+    -DPENUMBRA_FUZZ=ON
+  cmake --build "${dir}" -j"$(nproc)" --target "${targets[@]}"
+  # A leak, an invalid access or undefined behaviour fails the test that shows it.
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --test-dir "${dir}" --output-on-failure -j2
+  bash "${ROOT}/tests/fuzz/run.sh" 60 "${dir}"
+}
+
 step="${1:-}"
 case "${step}" in
   example | test | build) ;;
@@ -93,6 +113,7 @@ case "${step}" in
     # PoCL starts one thread per core in every test process; ctest runs two at a time.
     export POCL_MAX_PTHREAD_COUNT="${POCL_MAX_PTHREAD_COUNT:-2}"
     ctest --test-dir "${BUILD}" --output-on-failure -j2
+    reliability_tests
     ;;
   build) ;;
 esac
