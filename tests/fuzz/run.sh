@@ -5,8 +5,10 @@
 # with CC=clang-14 CXX=clang++-14 -DPENUMBRA_FUZZ=ON and the targets built. First every saved
 # regression input is replayed, then each target fuzzes a corpus seeded from data/, studies/,
 # the scene files the tests write (their R"(...)" strings) and tests/fuzz/seeds. A crash, a leak,
-# a UB report or an input taking over 1 s fails the script; the input is left in
-# BUILD_DIR/fuzz-artifacts/TARGET/: copy it to tests/fuzz/regressions/TARGET/ once fixed.
+# a UB report or a hang fails the script; the input is left in BUILD_DIR/fuzz-artifacts/TARGET/:
+# copy it to tests/fuzz/regressions/TARGET/ once fixed. A hang is an input still running after
+# FUZZ_TIMEOUT seconds (default 10): libFuzzer measures wall-clock time, and a CI machine under
+# load must not fail on a slow input. The long run (docs/reliability.md) used 1 s.
 set -euo pipefail
 
 seconds="${1:?usage: tests/fuzz/run.sh SECONDS [BUILD_DIR]}"
@@ -15,6 +17,7 @@ root="$(cd "${here}/../.." && pwd)"
 build="${2:-${root}/build-sanitize}"
 targets=(scene pts study)
 per_target=$((seconds / ${#targets[@]}))
+timeout="${FUZZ_TIMEOUT:-10}"
 ((per_target >= 1)) || per_target=1
 
 # Leaks count as failures; a UB report aborts so that libFuzzer keeps the input.
@@ -73,7 +76,7 @@ for target in "${targets[@]}"; do
   regressions=("${here}/regressions/${target}/"*)
   if [[ -e "${regressions[0]}" ]]; then
     echo "fuzz: ${target}: replaying ${#regressions[@]} regression inputs"
-    "${binary}" -timeout=1 "${regressions[@]}" > "${build}/fuzz-${target}-regressions.log" 2>&1 ||
+    "${binary}" -timeout="${timeout}" "${regressions[@]}" > "${build}/fuzz-${target}-regressions.log" 2>&1 ||
       { tail -40 "${build}/fuzz-${target}-regressions.log" >&2; status=1; continue; }
   fi
   corpus="${build}/fuzz-corpus/${target}"
@@ -81,7 +84,7 @@ for target in "${targets[@]}"; do
   seed "${target}" "${corpus}"
   mkdir -p "${artifacts}"
   echo "fuzz: ${target}: ${per_target} s on $(find "${corpus}" -type f | wc -l) corpus inputs"
-  if ! "${binary}" "${corpus}" -max_total_time="${per_target}" -timeout=1 -rss_limit_mb=2048 \
+  if ! "${binary}" "${corpus}" -max_total_time="${per_target}" -timeout="${timeout}" -rss_limit_mb=2048 \
     -max_len=16384 -print_final_stats=1 -artifact_prefix="${artifacts}/" \
     > "${build}/fuzz-${target}.log" 2>&1; then
     tail -60 "${build}/fuzz-${target}.log" >&2
