@@ -406,6 +406,13 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     ha = hb;
   }
   if (st.ns < 3) return 0.0f;
+  /* A face seen edge-on (every vertex of S' within the tolerance of the horizon, e.g. a source
+   * corner exactly in P's tangent plane) gives nothing: its E is below PN_EPS_REL · π·L, and the
+   * side planes of such a sliver have no direction, so occluder edges would be taken as inside it
+   * and integrated as holes (found by the stress suite: E = -11 lx, bench/degenerate_stress). */
+  float rise = 0.0f;
+  for (int i = 0; i < st.ns; ++i) rise = fmax(rise, dot(n, st.sv[i]) / length(st.sv[i]));
+  if (rise <= PN_EPS_REL) return 0.0f;
 
   /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
    * P is outside their penumbra volume or their bounding sphere misses the pyramid to the
@@ -461,7 +468,9 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int u = 0; u < st.na; ++u)
     for (int e = st.first_contour[u]; e < st.first_contour[u + 1]; ++e)
       sum += visible_edge_term(st.ca[e], st.cb[e], u, n, &st, error);
-  return sum;
+  /* A visible region gives no negative light: a sum below 0 is the float round-off of an empty
+   * one (an umbra's edge: -5e-6 lx where π·L = 3142 lx, bench/degenerate_stress). */
+  return fmax(sum, 0.0f);
 }
 
 /* ---------------------------------------------------------------------------------------------

@@ -70,12 +70,17 @@ class PenumbraProcess {
     return !exited_;
   }
   // SIGKILL: no chance to clean up, the hardest way a run can stop.
-  void kill() {
-    ::kill(pid_, SIGKILL);
+  void kill() { stop(SIGKILL); }
+  // Sends `signal` (SIGINT as Ctrl-C, SIGTERM as a scheduler's limit) and waits for the end;
+  // returns the wait status (WIFSIGNALED, WTERMSIG, ...).
+  int stop(int signal) {
+    ::kill(pid_, signal);
     int status = 0;
     ::waitpid(pid_, &status, 0);
     exited_ = true;
+    return status;
   }
+  pid_t pid() const { return pid_; }
 
  private:
   pid_t pid_ = -1;

@@ -342,6 +342,29 @@ TEST(Pts, ErrorsNameThePtsFileAndLine) {
   }
 }
 
+// Found by the pts fuzz target (tests/fuzz/regressions/pts): a normal of 7.7e157 squared
+// overflowed, and normalized() gave a NaN normal, which the kernel turned into NaN illuminance;
+// a normal of 3e-300 squared underflowed, and was rejected as the zero vector.
+TEST(Pts, HugeAndTinyNormalsBecomeUnitVectors) {
+  const scenefile::SensorPoints pts =
+      scenefile::parsePts("0 0 0 0 1e200 1e200\n0 0 0 -3e-300 0 0\n", "s.pts", "k");
+  ASSERT_EQ(pts.normals.size(), 2u);
+  const double half = std::sqrt(0.5);
+  EXPECT_NEAR((pts.normals[0] - Vec3(0, half, half)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((pts.normals[1] - Vec3(-1, 0, 0)).norm(), 0.0, 1e-15);
+}
+
+TEST(Pts, HugeNormalsInTheSceneBecomeUnitVectors) {
+  const Scene scene = parseScene(R"(penumbra: 1
+grids:
+  - name: s
+    points: [[0, 0, 0, 1e300, 0, 1e300]]
+)",
+                                 "test.yaml");
+  const double half = std::sqrt(0.5);
+  EXPECT_NEAR((scene.grids.at(0).normals.at(0) - Vec3(half, 0, half)).norm(), 0.0, 1e-15);
+}
+
 TEST(Pts, OfficeSensorsResolveRelativeToTheScene) {
   const Scene scene = loadScene(kOffice);
   const CalculationGrid& g = scene.grids[2];

@@ -10,6 +10,7 @@
 #include "cli/sweep_options.hpp"
 #include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
+#include "output/interrupt_cleanup.hpp"
 #include "viz/case_plots.hpp"
 #include "viz/isoband_svg.hpp"
 #include "viz/line_chart_writer.hpp"
@@ -18,6 +19,8 @@
 #include "viz/render_png.hpp"
 
 int main(int argc, char** argv) {
+  // Before any thread starts: Ctrl-C or SIGTERM then leaves no staging directory behind.
+  penumbra::removeStagingOnInterrupt();
   CLI::App app{penumbra::help::kProgram, "penumbra"};
   app.footer(penumbra::help::kProgramFooter);
   app.set_version_flag("--version", std::string("penumbra ") + penumbra::kVersion);

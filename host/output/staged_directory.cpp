@@ -7,6 +7,8 @@
 #include <string>
 #include <system_error>
 
+#include "output/interrupt_cleanup.hpp"
+
 namespace penumbra {
 
 namespace fs = std::filesystem;
@@ -57,8 +59,14 @@ StagedDirectory::StagedDirectory(const fs::path& target) : target_(normalizedTar
     staging_ =
         target_.parent_path() / fmt::format(".{}.partial-{}", target_.filename().string(), pid);
   }
-  fs::remove_all(staging_);  // a leftover of a killed run with the same pid
-  fs::create_directory(staging_);
+  registerStaging(staging_);  // before it exists: an interrupt from here on removes it
+  try {
+    fs::remove_all(staging_);  // a leftover of a killed run with the same pid
+    fs::create_directory(staging_);
+  } catch (...) {
+    unregisterStaging(staging_);
+    throw;
+  }
 }
 
 StagedDirectory::~StagedDirectory() {
@@ -68,10 +76,12 @@ StagedDirectory::~StagedDirectory() {
   for (auto it = createdParents_.rbegin(); it != createdParents_.rend(); ++it) {
     fs::remove(*it, ec);  // only if still empty
   }
+  unregisterStaging(staging_);
 }
 
 void StagedDirectory::commit() {
   if (committed_) throw std::logic_error("StagedDirectory committed twice");
+  const InterruptDeferral deferral;  // SIGINT/SIGTERM wait until every file is in place
   if (!targetExisted_ && !fs::exists(target_)) {
     fs::rename(staging_, target_);
   } else {
@@ -82,6 +92,7 @@ void StagedDirectory::commit() {
     fs::remove(staging_);
   }
   committed_ = true;
+  unregisterStaging(staging_);
 }
 
 }  // namespace penumbra

@@ -56,9 +56,10 @@ PointsSpec readInlinePoints(const Reader& reader, const Field& field) {
   for (const Field& row : reader.list(field, "a list of points [x, y, z, nx, ny, nz]")) {
     const std::vector<double> v = reader.numbers(row, 6);
     const Vec3 normal(v[3], v[4], v[5]);
-    if (normal.norm() == 0.0) reader.fail(row.where, "the normal [nx, ny, nz] is the zero vector");
+    if (normal == Vec3::Zero())
+      reader.fail(row.where, "the normal [nx, ny, nz] is the zero vector");
     spec.positions.emplace_back(v[0], v[1], v[2]);
-    spec.normals.push_back(normal.normalized());
+    spec.normals.push_back(normal.stableNormalized());  // 1e200 would overflow normalized()
   }
   return spec;
 }

@@ -43,9 +43,10 @@ SensorPoints parsePts(const std::string& text, const std::filesystem::path& file
       fail(file, where, "expected 6 numbers (x y z nx ny nz), got " + std::to_string(count));
     }
     const Vec3 normal(v[3], v[4], v[5]);
-    if (normal.norm() == 0.0) fail(file, where, "the normal (nx ny nz) is the zero vector");
+    if (normal == Vec3::Zero()) fail(file, where, "the normal (nx ny nz) is the zero vector");
     out.positions.emplace_back(v[0], v[1], v[2]);
-    out.normals.push_back(normal.normalized());
+    // Stable: normalized() squares the components, and a normal of 1e200 overflows to a NaN one.
+    out.normals.push_back(normal.stableNormalized());
   }
   return out;
 }

@@ -120,7 +120,9 @@ std::vector<WallRect> wallPieces(const WallFrame& wall, double height,
     if (height - z > tol) runs.emplace_back(z, height);
 
     std::vector<std::size_t> next;
-    for (const auto& [z0, z1] : runs) {
+    for (const auto& run : runs) {
+      // Named copies, not a structured binding: clang 14 (fuzz/sanitizer build) cannot capture one.
+      const double z0 = run.first, z1 = run.second;
       const auto same = std::find_if(open.begin(), open.end(), [&](std::size_t i) {
         return std::abs(pieces[i].z0 - z0) <= tol && std::abs(pieces[i].z1 - z1) <= tol;
       });

@@ -243,8 +243,8 @@ Vec3 Reader::vec3(const Field& field) const {
 
 Vec3 Reader::direction(const Field& field) const {
   const Vec3 v = vec3(field);
-  if (v.norm() == 0.0) fail(field.where, "a direction cannot be the zero vector");
-  return v.normalized();
+  if (v == Vec3::Zero()) fail(field.where, "a direction cannot be the zero vector");
+  return v.stableNormalized();  // normalized() squares: 1e200 would overflow to NaN
 }
 
 std::vector<Vec3> Reader::points(const Field& field, std::size_t minimum) const {

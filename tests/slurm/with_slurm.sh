@@ -25,6 +25,18 @@ done
 # links kernels with `ld`) and the Slurm commands need one. The daemons live in /usr/sbin.
 export PATH="${PATH:-/usr/bin:/bin}:/usr/sbin:/sbin"
 
+# slurmd 22.05 (Debian 12) initialises its cgroup plugin even with proctrack/linuxproc and
+# task/none, and stops without a cgroup file system ("No filesystem mounted on /sys/fs/cgroup").
+# A chroot whose /sys was bind-mounted without its submounts has none: mount one there (root can)
+# and unmount it afterwards.
+MOUNTED_CGROUP=""
+if [[ -d /sys/fs/cgroup ]] && ! grep -qs " /sys/fs/cgroup " /proc/self/mounts; then
+  if mount -t cgroup2 none /sys/fs/cgroup 2>/dev/null; then
+    MOUNTED_CGROUP=1
+    echo "with_slurm: mounted a cgroup2 file system on /sys/fs/cgroup for slurmd" >&2
+  fi
+fi
+
 DIR="$(mktemp -d "${TMPDIR:-/tmp}/penumbra-slurm.XXXXXX")"
 chmod 700 "${DIR}"
 NODE="penumbra-node"
@@ -63,6 +75,7 @@ stop_cluster() {
     kill -9 "${pid}" 2>/dev/null || true
   done
   rm -rf "${DIR}"
+  if [[ -n "${MOUNTED_CGROUP}" ]]; then umount /sys/fs/cgroup 2>/dev/null || true; fi
 }
 trap stop_cluster EXIT
 

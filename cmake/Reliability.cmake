@@ -1,0 +1,27 @@
+# Reliability builds (issue 10, docs/reliability.md), each in a build directory of its own:
+#   -DPENUMBRA_SANITIZE=address,undefined   host code and its tests under ASan + UBSan (g++ or
+#                                           clang); viz tests are left out
+#   -DPENUMBRA_FUZZ=ON                      libFuzzer targets in tests/fuzz (needs clang: the
+#                                           main build's g++ has no libFuzzer)
+set(PENUMBRA_SANITIZE "" CACHE STRING "Sanitizers for host code and tests, e.g. address,undefined")
+option(PENUMBRA_FUZZ "Build the libFuzzer targets (clang only)" OFF)
+
+if(PENUMBRA_FUZZ)
+  if(NOT CMAKE_CXX_COMPILER_ID STREQUAL "Clang")
+    message(FATAL_ERROR "PENUMBRA_FUZZ needs clang (CXX=clang++-14); this is "
+                        "${CMAKE_CXX_COMPILER_ID}")
+  endif()
+  # Every object is instrumented for coverage and checked by ASan + UBSan; only the fuzz targets
+  # link libFuzzer's main.
+  if(NOT PENUMBRA_SANITIZE)
+    set(PENUMBRA_SANITIZE address,undefined)
+  endif()
+  add_compile_options(-fsanitize=fuzzer-no-link)
+endif()
+
+if(PENUMBRA_SANITIZE)
+  # A UB report stops the test (no recovery), so ctest sees it as a failure, not a log line.
+  add_compile_options(-fsanitize=${PENUMBRA_SANITIZE} -fno-sanitize-recover=all
+                      -fno-omit-frame-pointer -g)
+  add_link_options(-fsanitize=${PENUMBRA_SANITIZE})
+endif()

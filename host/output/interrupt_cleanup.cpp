@@ -1,0 +1,85 @@
+#include "output/interrupt_cleanup.hpp"
+
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <mutex>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace penumbra {
+
+namespace {
+
+// A recursive mutex: a commit (which holds it) unregisters its own staging directory.
+std::recursive_mutex& registryMutex() {
+  static std::recursive_mutex mutex;
+  return mutex;
+}
+
+std::vector<std::filesystem::path>& registry() {
+  static std::vector<std::filesystem::path> paths;
+  return paths;
+}
+
+sigset_t interruptSignals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
+}
+
+[[noreturn]] void waitForInterrupt() {
+  const sigset_t set = interruptSignals();
+  int signal = SIGTERM;
+  while (sigwait(&set, &signal) != 0) {
+  }
+  {
+    // Taken and kept: no commit can start after this point, one in progress is finished.
+    registryMutex().lock();
+    std::error_code ec;
+    for (const auto& staging : registry()) std::filesystem::remove_all(staging, ec);
+  }
+  // End the way the signal would have ended it, so that a shell or a scheduler sees the cause.
+  ::signal(signal, SIG_DFL);
+  pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+  ::raise(signal);
+  ::_exit(128 + signal);  // not reached
+}
+
+}  // namespace
+
+void removeStagingOnInterrupt() {
+  static std::once_flag started;
+  std::call_once(started, [] {
+    const sigset_t set = interruptSignals();
+    pthread_sigmask(SIG_BLOCK, &set, nullptr);
+    std::thread(waitForInterrupt).detach();
+  });
+}
+
+void registerStaging(const std::filesystem::path& staging) {
+  std::lock_guard lock(registryMutex());
+  registry().push_back(staging);
+}
+
+void unregisterStaging(const std::filesystem::path& staging) {
+  std::lock_guard lock(registryMutex());
+  auto& paths = registry();
+  if (const auto it = std::find(paths.begin(), paths.end(), staging); it != paths.end()) {
+    paths.erase(it);
+  }
+}
+
+InterruptDeferral::InterruptDeferral() {
+  registryMutex().lock();
+}
+InterruptDeferral::~InterruptDeferral() {
+  registryMutex().unlock();
+}
+
+}  // namespace penumbra
