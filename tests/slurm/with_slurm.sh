@@ -26,16 +26,34 @@ done
 export PATH="${PATH:-/usr/bin:/bin}:/usr/sbin:/sbin"
 
 # slurmd 22.05 (Debian 12) initialises its cgroup plugin even with proctrack/linuxproc and
-# task/none, and stops without a cgroup file system ("No filesystem mounted on /sys/fs/cgroup").
-# A chroot whose /sys was bind-mounted without its submounts has none: mount one there (root can)
-# and unmount it afterwards.
-MOUNTED_CGROUP=""
-if [[ -d /sys/fs/cgroup ]] && ! grep -qs " /sys/fs/cgroup " /proc/self/mounts; then
-  if mount -t cgroup2 none /sys/fs/cgroup 2>/dev/null; then
-    MOUNTED_CGROUP=1
-    echo "with_slurm: mounted a cgroup2 file system on /sys/fs/cgroup for slurmd" >&2
+# task/none, and stops without a cgroup file system ("No filesystem mounted on /sys/fs/cgroup"),
+# or with one of the other kind than the kernel gives this process ("Hybrid mode is not
+# supported"). A chroot whose /sys was bind-mounted without its submounts has none: mount what
+# /proc/self/cgroup says this process is in (v2: one cgroup2; v1: a tmpfs and one hierarchy per
+# line), as systemd or a container runtime would, and unmount it afterwards.
+MOUNTED_CGROUP=()
+mount_cgroups() {
+  [[ -d /sys/fs/cgroup ]] && ! grep -qs " /sys/fs/cgroup" /proc/self/mounts || return 0
+  if [[ "$(cat /proc/self/cgroup)" == 0::* ]]; then
+    mount -t cgroup2 none /sys/fs/cgroup 2>/dev/null && MOUNTED_CGROUP=(/sys/fs/cgroup)
+  else
+    mount -t tmpfs cgroup-root /sys/fs/cgroup 2>/dev/null || return 0
+    MOUNTED_CGROUP=(/sys/fs/cgroup)
+    local id controllers path dir options
+    while IFS=: read -r id controllers path; do
+      [[ "${id}" == 0 || -z "${controllers}" ]] && continue
+      dir="${controllers#name=}"
+      options="${controllers}"
+      [[ "${controllers}" == name=* ]] && options="none,${controllers}"
+      mkdir -p "/sys/fs/cgroup/${dir}"
+      mount -t cgroup -o "${options}" cgroup "/sys/fs/cgroup/${dir}" 2>/dev/null &&
+        MOUNTED_CGROUP=("/sys/fs/cgroup/${dir}" "${MOUNTED_CGROUP[@]}")
+    done </proc/self/cgroup
   fi
-fi
+  ((${#MOUNTED_CGROUP[@]} == 0)) ||
+    echo "with_slurm: mounted the cgroup file system slurmd needs on /sys/fs/cgroup" >&2
+}
+mount_cgroups
 
 DIR="$(mktemp -d "${TMPDIR:-/tmp}/penumbra-slurm.XXXXXX")"
 chmod 700 "${DIR}"
@@ -75,7 +93,8 @@ stop_cluster() {
     kill -9 "${pid}" 2>/dev/null || true
   done
   rm -rf "${DIR}"
-  if [[ -n "${MOUNTED_CGROUP}" ]]; then umount /sys/fs/cgroup 2>/dev/null || true; fi
+  local mounted
+  for mounted in "${MOUNTED_CGROUP[@]}"; do umount "${mounted}" 2>/dev/null || true; done
 }
 trap stop_cluster EXIT
 
