@@ -86,9 +86,9 @@ std::string mergeScript(const SlurmJobs& jobs) {
     folders += ' ';
     folders += shellQuote(shardFolder(jobs.output, shard).string());
   }
-  return preamble(directives, true) + fmt::format("\"${{run[@]}}\" {} merge{} -o {}\n",
-                                                  shellQuote(jobs.penumbra.string()), folders,
-                                                  shellQuote(jobs.output.string()));
+  return preamble(directives, jobs.charts) + fmt::format("\"${{run[@]}}\" {} merge{} -o {}\n",
+                                                         shellQuote(jobs.penumbra.string()),
+                                                         folders, shellQuote(jobs.output.string()));
 }
 
 }  // namespace penumbra

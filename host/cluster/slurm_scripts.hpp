@@ -18,6 +18,7 @@ struct SlurmJobs {
   std::vector<int> array;          // the shards (1..N) this submission runs, ascending
   EstimatorOptions estimator;
   bool display = false;  // the cases draw plots: run them under xvfb-run where there is one
+  bool charts = true;    // the merge draws charts: run it under xvfb-run where there is one
   std::string name;      // job name stem, e.g. "penumbra-window-width"
 };
 

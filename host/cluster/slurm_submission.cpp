@@ -185,6 +185,7 @@ SlurmSubmission submitToSlurm(const Study& study, const SlurmSettings& settings)
   jobs.array = result.array;
   jobs.estimator = settings.estimator;
   jobs.display = !requestedCaseOutputs(study).empty();
+  jobs.charts = study.charts;
   jobs.name = "penumbra-" + study.file.stem().string();
   std::vector<std::pair<std::string, std::string>> scripts{{kMergeScript, mergeScript(jobs)}};
   if (!jobs.array.empty()) scripts.emplace_back(kShardScript, shardScript(jobs));
