@@ -70,16 +70,16 @@ TableSummary writeStudyTables(const fs::path& out, const StudyLayout& layout,
 // The cases this run computes: the shard's cases that are not finished in `out`.
 std::vector<const PlannedCase*> casesToCompute(const StudyLayout& layout, const Shard& shard,
                                                const fs::path& out, SweepSummary& summary) {
-  std::vector<const PlannedCase*> todo;
+  std::vector<const PlannedCase*> pending;
   for (std::size_t i = 0; i < layout.cases.size(); ++i) {
     if (!shard.contains(i)) continue;
     if (readFinishedCase(out, layout.cases[i])) {
       ++summary.skipped;
     } else {
-      todo.push_back(&layout.cases[i]);
+      pending.push_back(&layout.cases[i]);
     }
   }
-  return todo;
+  return pending;
 }
 
 // The writers of the outputs the study asks for that can work here; a note for each other one.
@@ -138,21 +138,21 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
 
   summary.cases = layout.cases.size();
   writeLayout(settings.output, layout);
-  const std::vector<const PlannedCase*> todo =
+  const std::vector<const PlannedCase*> pending =
       casesToCompute(layout, settings.shard, settings.output, summary);
 
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Estimator> estimator;
-  if (!todo.empty()) {
-    scene = std::make_unique<Scene>(loadCaseScene(study, *todo.front()));
+  if (!pending.empty()) {
+    scene = std::make_unique<Scene>(loadCaseScene(study, *pending.front()));
     estimator = std::make_unique<Estimator>(settings.estimator, *scene);
     summary.device = estimator->device();
   }
-  observer.planned(todo.size(), summary.skipped);
-  for (const PlannedCase* c : todo) {
+  observer.planned(pending.size(), summary.skipped);
+  for (const PlannedCase* c : pending) {
     observer.caseStarted(*c);
     const auto start = Clock::now();
-    if (c != todo.front()) {
+    if (c != pending.front()) {
       // The new scene is uploaded to the device already holding the program; the old one goes.
       auto next = std::make_unique<Scene>(loadCaseScene(study, *c));
       estimator->setScene(*next);
