@@ -20,7 +20,9 @@ ConvexPolyhedron tessellate(const SphereShape& sphere, int facets, const Vec3& l
                             FacetPlacement placement, double tolerance) {
   const double pi = std::numbers::pi;
   const Vec3 north = light.normalized();
-  const auto [u, v] = frameAround(north, Vec3::UnitX());
+  // Named, not a structured binding: clang 14 (the fuzz build) cannot capture those in a lambda.
+  const std::pair<Vec3, Vec3> frame = frameAround(north, Vec3::UnitX());
+  const Vec3 u = frame.first, v = frame.second;
   const int n = facets, around = 2 * facets;
   std::vector<Vec3> points;
   const auto ring = [&](double polar) {
@@ -47,7 +49,8 @@ ConvexPolyhedron tessellate(const TruncusShape& truncus, int facets, const Vec3&
   const double pi = std::numbers::pi;
   const double height = truncus.axis.norm();
   const Vec3 a = truncus.axis / height;
-  const auto [le, side] = frameAround(a, light);  // L_En and L_En × a (up to sign)
+  const std::pair<Vec3, Vec3> frame = frameAround(a, light);  // L_En and L_En × a (up to sign)
+  const Vec3 le = frame.first, side = frame.second;
   const double offset = placement == FacetPlacement::Laminae ? 0.0 : 0.5;
   std::vector<Vec3> points;
   const auto rim = [&](const Vec3& centre, double radius) {
