@@ -55,11 +55,12 @@ int main(int argc, char** argv) {
   }
   for (const std::string& f : figures.failures) fmt::print("FAIL {}\n", f);
   fmt::print(
-      "configurations {} (seed {}, first {}, thin boxes {} m), points {}, reference n {}\n"
+      "configurations {} (seed {}, first {}, thin boxes {} m), points {} (and {} inside solids, "
+      "skipped), reference n {}\n"
       "non-finite {}, negative {}, above unoccluded {}, off the reference {}\n"
       "worst |E - E_ref| / E_unoccluded {:.3e} at {}\n",
-      figures.configurations, seed, first, thin, figures.points, referenceN, figures.nonFinite,
-      figures.negative, figures.aboveUnoccluded, figures.beyondReference, figures.worstRelative,
-      figures.worstCase);
+      figures.configurations, seed, first, thin, figures.points, figures.insideSolids, referenceN,
+      figures.nonFinite, figures.negative, figures.aboveUnoccluded, figures.beyondReference,
+      figures.worstRelative, figures.worstCase);
   return figures.failed() == 0 ? 0 : 1;
 }

@@ -522,6 +522,42 @@ solids:
               3, "solids[0].box", "no volume");
 }
 
+// A solid thinner than 1/1000 of the scene's size is refused (Tolerance::kMinimumThicknessRelative:
+// the float kernels err at its shadow boundaries). The scene below spans a 10 × 10 × 2 m box
+// (diagonal 14.3 m): the limit is 14.3 mm. The thickness is measured across faces, whatever
+// the solid's orientation.
+TEST(Errors, SolidsThinnerThanTheKernelsResolve) {
+  const std::string head = R"(penumbra: 1
+sources:
+  - {name: panel, rect: {center: [5, 5, 2], size: [1, 1], normal: [0, 0, -1]}, luminance: 1000}
+solids:
+  - {name: floor, box: {min: [0, 0, -0.1], max: [10, 10, 0]}}
+)";
+  const SceneError e =
+      errorOf(head + "  - {name: pane, box: {min: [2, 2, 0.5], max: [3, 2.01, 1.5]}}\n");
+  EXPECT_EQ(e.line(), 6) << e.what();
+  EXPECT_EQ(e.key(), "solids[1].box") << e.what();
+  EXPECT_NE(std::string(e.what()).find("solid 'pane' is 10 mm thick"), std::string::npos)
+      << e.what();
+  // The limit is 1/1000 of the scene's size (the loader's bounding diagonal, 14.3 m or a little
+  // more): the same digits in m and in mm.
+  EXPECT_NE(std::string(e.what()).find("in a scene of 14."), std::string::npos) << e.what();
+  EXPECT_NE(std::string(e.what()).find("shade solids from 14."), std::string::npos) << e.what();
+  // A tilted slab, 5 mm thick across its faces (its axis-aligned extents are far larger).
+  const SceneError tilted =
+      errorOf(head +
+              "  - {name: louvre, hull: [[2, 2, 1], [3, 2, 1], [2, 2.5, 1.5], [3, 2.5, 1.5], "
+              "[2, 2.003536, 0.996464], [3, 2.003536, 0.996464], [2, 2.503536, 1.496464], "
+              "[3, 2.503536, 1.496464]]}\n");
+  EXPECT_EQ(tilted.key(), "solids[1].hull") << tilted.what();
+  EXPECT_NE(std::string(tilted.what()).find("'louvre' is 5 mm thick"), std::string::npos)
+      << tilted.what();
+  // Just above the limit loads, and keeps its thickness.
+  const Scene scene = parseScene(
+      head + "  - {name: pane, box: {min: [2, 2, 0.5], max: [3, 2.015, 1.5]}}\n", "test.yaml");
+  EXPECT_NEAR(solidNamed(scene, "pane").shape.thickness(), 0.015, 1e-12);
+}
+
 TEST(Errors, NormalNotPerpendicular) {
   expectError(R"(penumbra: 1
 sources:

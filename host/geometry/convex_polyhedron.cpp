@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -110,6 +111,16 @@ double ConvexPolyhedron::volume() const {
   double total = 0.0;
   forEachTetrahedron(vertices_, faces_, [&](double v, const Vec3&) { total += v; });
   return total;
+}
+
+double ConvexPolyhedron::thickness() const {
+  double thinnest = faces_.empty() ? 0.0 : std::numeric_limits<double>::infinity();
+  for (const Face& face : faces_) {
+    double width = 0.0;
+    for (const Vec3& v : vertices_) width = std::max(width, -face.plane.signedDistance(v));
+    thinnest = std::min(thinnest, width);
+  }
+  return thinnest;
 }
 
 Vec3 ConvexPolyhedron::centroid() const {

@@ -39,6 +39,9 @@ class ConvexPolyhedron {
   double volume() const;
   Vec3 centroid() const;  // volume centroid
   double surfaceArea() const;
+  // The smallest width measured across a face (the distance from a face's plane to the farthest
+  // vertex behind it, least over the faces): a slab's thickness, a box's shortest side.
+  double thickness() const;
 
   // The part inside the half-space signedDistance <= 0 of `boundary`. Empty when nothing with
   // volume (thicker than tolerance) remains.

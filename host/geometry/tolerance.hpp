@@ -22,6 +22,13 @@ struct Tolerance {
   // and still rejects real mix-ups, which are off by tens of degrees. An angle: not scaled.
   static constexpr double kInputAngle = 1e-2;
 
+  // The thinnest solid the float kernels shade correctly, relative to the scene size: 1e-3
+  // (100 × kKernelRelative; a 6 m scene: 6 mm). Thinner slabs put a solid's front and back contour
+  // edges within the kernel's tolerance of each other, and points on their shadow boundaries err
+  // (bench/degenerate_stress --thin: 0.1 mm 14 %, 1–2 mm up to 20 % at grazing points, 5 mm and
+  // 1 cm within the criterion; docs/reliability.md). The loader refuses thinner solids.
+  static constexpr double kMinimumThicknessRelative = 1e-3;
+
   double length = 1e-9;  // absolute length tolerance, metres
 
   static Tolerance forSceneSize(double sceneSize) {

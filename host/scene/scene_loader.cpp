@@ -55,8 +55,23 @@ double specSize(const SceneSpec& spec) {
   return (high.array() >= low.array()).all() ? (high - low).norm() : 0.0;
 }
 
+// A solid thinner than the kernels resolve would give wrong shadows at its boundary, silently:
+// refuse it, naming the solid, its thickness and what would do (Tolerance says why the limit).
+void requireThickness(const Solid& solid, double minimum, double sceneSize,
+                      const std::filesystem::path& file, const Where& where) {
+  const double thickness = solid.shape.thickness();
+  if (thickness >= minimum) return;
+  fail(file, where,
+       fmt::format("solid '{}' is {:.3g} mm thick at its thinnest; in a scene of {:.3g} m the "
+                   "float kernels shade solids from {:.3g} mm (1/1000 of the scene's size) "
+                   "correctly: model it at {:.3g} mm or more, or leave it out",
+                   solid.name, 1e3 * thickness, sceneSize, 1e3 * minimum, 1e3 * minimum));
+}
+
 Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
-  BuildContext context{file, Tolerance::kRelativeInput * std::max(specSize(spec), 1.0), {}};
+  const double sceneSize = std::max(specSize(spec), 1.0);
+  const double minimumThickness = Tolerance::kMinimumThicknessRelative * sceneSize;
+  BuildContext context{file, Tolerance::kRelativeInput * sceneSize, {}};
   Scene scene;
   scene.file = file;
   scene.materials = spec.materials;
@@ -64,6 +79,8 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
     BuiltRoom built = buildRoom(*spec.room, context);
     scene.room = std::move(built.room);
     scene.solids = std::move(built.slabs);
+    for (const Solid& slab : scene.solids)
+      requireThickness(slab, minimumThickness, sceneSize, file, spec.room->where);
   }
   // Sources before solids: a curved solid orients its facets towards the strongest source.
   for (const SourceSpec& source : spec.sources) {
@@ -75,6 +92,7 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   for (const SolidSpec& solid : spec.solids) {
     scene.solids.push_back(
         Solid{solid.name, buildPolyhedron(solid.shape, solid.shapeWhere, context), solid.material});
+    requireThickness(scene.solids.back(), minimumThickness, sceneSize, file, solid.shapeWhere);
   }
   for (const GridSpec& grid : spec.grids) {
     scene.grids.push_back(buildGrid(grid, scene.room, context));
