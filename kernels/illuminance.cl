@@ -164,10 +164,14 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
  * shared contour edge, a duplicated occluder counts once, and an occluder edge collinear with
  * a source edge never leaks. */
 
+/* S' vertices, relative to P: each clip by a plane through P adds at most one vertex (the
+ * horizon, a contact's face, a wedge piece's faces). */
+#define PN_MAX_SOURCE_POLYGON \
+  (PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS + PN_MAX_WEDGES * PN_MAX_WEDGE_FACES)
+
 typedef struct {
-  /* S' vertices, relative to P: each clip by a plane adds at most one vertex */
-  float3 sv[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS];
-  float3 sm[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS]; /* unit side normals of S' */
+  float3 sv[PN_MAX_SOURCE_POLYGON];
+  float3 sm[PN_MAX_SOURCE_POLYGON]; /* unit side normals of S' */
   int ns;
   /* The active occluders' contour edges, hole-oriented, relative to P, with their unit side-plane
    * normals along cross(a, b) (zero where P is on the edge's line: no plane), extracted once per
@@ -179,7 +183,7 @@ typedef struct {
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
 void clip_source(PenumbraState* st, float3 keep) {
-  float3 out[PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS];
+  float3 out[PN_MAX_SOURCE_POLYGON];
   int count = 0;
   float3 a = st->sv[st->ns - 1];
   float ha = dot(keep, a);
@@ -199,31 +203,35 @@ void clip_source(PenumbraState* st, float3 keep) {
  * directions into it form the cone {x : f·x < 0 for every face f through P}. Faces whose
  * closed inside already holds all of S' do not limit that cone within S' (the floor under a
  * cabinet: the cabinet's bottom face holds everything above the horizon, so the point is
- * dark). One face left: S' is clipped by it, exactly. None left: P sees nothing of the source
- * face. Two or more (P on an edge or corner that also cuts the pyramid to the source, a set of
- * measure zero): the face most opposed to P's normal is taken. A point strictly inside (no face
- * through P) is flagged by the host and left alone. False when nothing of S' is left. */
-bool clip_by_contact(PenumbraState* st, float3 p, float3 n, PnOccluder o,
-                     __global const float4* planes, float eps_length) {
-  bool touches = false;
-  int limiting = -1;
-  float opposed = 2.0f;
+ * dark). Returns how many faces limit it (-1: no face passes through P, a point strictly
+ * inside, which the host flags), the first `capacity` of them in `limiting` and, in `opposed`,
+ * the one most opposed to P's normal.
+ *  - None: P sees nothing of the source face.
+ *  - One: S' is clipped by it, exactly.
+ *  - Two or more: P lies on an edge or a corner of the solid (a floor point at a cabinet's
+ *    corner, a point on the edge two boxes share) and S' minus the wedge is not convex;
+ *    penumbra_face sums it in convex pieces (wedge_pieces_sum). */
+int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                  __global const float4* planes, float eps_length, float3* limiting, int capacity,
+                  float3* opposed) {
+  int count = -1;
+  float most = 2.0f;
   for (int j = 0; j < o.planeCount; ++j) {
     float4 pl = planes[o.firstPlane + j];
     if (dot(pl.xyz, p) - pl.w < -eps_length) continue; /* this face does not pass through P */
-    touches = true;
+    if (count < 0) count = 0;
     bool holds_source = true;
     for (int i = 0; i < st->ns && holds_source; ++i)
       holds_source = dot(pl.xyz, st->sv[i]) <= PN_EPS_REL * length(st->sv[i]);
-    if (!holds_source && dot(pl.xyz, n) < opposed) {
-      opposed = dot(pl.xyz, n);
-      limiting = j;
+    if (holds_source) continue;
+    if (count < capacity) limiting[count] = pl.xyz;
+    ++count;
+    if (dot(pl.xyz, n) < most) {
+      most = dot(pl.xyz, n);
+      *opposed = pl.xyz;
     }
   }
-  if (!touches) return true;
-  if (limiting < 0) return false;
-  clip_source(st, planes[o.firstPlane + limiting].xyz);
-  return st->ns >= 3;
+  return count;
 }
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
@@ -384,6 +392,46 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
   return sum;
 }
 
+/* E / (L/2) of the visible part of S' (st->sv) past the active occluders. */
+float region_sum(PenumbraState* st, float3 n, int* error) {
+  for (int i = 0; i < st->ns; ++i)
+    st->sm[i] = side_normal(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1]);
+  float sum = 0.0f;
+  for (int i = 0; i < st->ns; ++i)
+    sum += visible_edge_term(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1], -1, n, st, error);
+  for (int u = 0; u < st->na; ++u)
+    for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
+      sum += visible_edge_term(st->ca[e], st->cb[e], u, n, st, error);
+  return sum;
+}
+
+/* S' minus the wedges of the solids P lies on the edge or corner of (contact_faces), as disjoint
+ * convex pieces: for a wedge of faces f_1 … f_m the part of a piece outside the wedge is the
+ * union over i of {f_i·x ≥ 0, f_j·x < 0 for j < i}; every piece is integrated like S' (the tie
+ * rule holds for any convex region) and the pieces' shared sides cancel in the sum. */
+float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX_WEDGE_FACES],
+                       const int* wedge_faces, int wedges, int* error) {
+  float3 base[PN_MAX_SOURCE_POLYGON];
+  const int base_count = st->ns;
+  for (int i = 0; i < base_count; ++i) base[i] = st->sv[i];
+  int pieces = 1;
+  for (int k = 0; k < wedges; ++k) pieces *= wedge_faces[k];
+  float sum = 0.0f;
+  for (int piece = 0; piece < pieces; ++piece) {
+    st->ns = base_count;
+    for (int i = 0; i < base_count; ++i) st->sv[i] = base[i];
+    int code = piece;
+    for (int k = 0; k < wedges && st->ns >= 3; ++k) {
+      const int chosen = code % wedge_faces[k];
+      code /= wedge_faces[k];
+      for (int j = 0; j < chosen && st->ns >= 3; ++j) clip_source(st, -wedge[k][j]);
+      if (st->ns >= 3) clip_source(st, wedge[k][chosen]);
+    }
+    if (st->ns >= 3) sum += region_sum(st, n, error);
+  }
+  return sum;
+}
+
 float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf,
                     __global const int* candidates, int use_volumes,
                     __global const float4* vertices, __global const PnOccluder* occluders,
@@ -420,6 +468,9 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   st.na = 0;
   st.first_contour[0] = 0;
   int contacts = 0;
+  float3 wedge[PN_MAX_WEDGES][PN_MAX_WEDGE_FACES];
+  int wedge_faces[PN_MAX_WEDGES];
+  int wedges = 0;
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
     const int k = occluder_index(i, pf, face, candidates);
@@ -435,7 +486,20 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
         break;
       }
       ++contacts;
-      if (!clip_by_contact(&st, p, n, o, planes, eps_length)) return 0.0f;
+      float3 limiting[PN_MAX_WEDGE_FACES], opposed;
+      const int m =
+          contact_faces(&st, p, n, o, planes, eps_length, limiting, PN_MAX_WEDGE_FACES, &opposed);
+      if (m < 0) continue;
+      if (m == 0) return 0.0f;
+      if (m >= 2 && m <= PN_MAX_WEDGE_FACES && wedges < PN_MAX_WEDGES) {
+        for (int j = 0; j < m; ++j) wedge[wedges][j] = limiting[j];
+        wedge_faces[wedges++] = m;
+        continue;
+      }
+      /* One face, exactly; or (more wedges or faces than the pieces hold: P at a vertex where
+       * many facets meet, a set of measure zero) the face most opposed to P's normal alone. */
+      clip_source(&st, m == 1 ? limiting[0] : opposed);
+      if (st.ns < 3) return 0.0f;
       continue;
     }
     if (sphere_outside_pyramid(p, n, o, face, vertices)) continue;
@@ -460,14 +524,8 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     st.first_contour[st.na] = c;
   }
 
-  for (int i = 0; i < st.ns; ++i)
-    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
-  float sum = 0.0f;
-  for (int i = 0; i < st.ns; ++i)
-    sum += visible_edge_term(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1], -1, n, &st, error);
-  for (int u = 0; u < st.na; ++u)
-    for (int e = st.first_contour[u]; e < st.first_contour[u + 1]; ++e)
-      sum += visible_edge_term(st.ca[e], st.cb[e], u, n, &st, error);
+  const float sum = wedges == 0 ? region_sum(&st, n, error)
+                                : wedge_pieces_sum(&st, n, wedge, wedge_faces, wedges, error);
   /* A visible region gives no negative light: a sum below 0 is the float round-off of an empty
    * one (an umbra's edge: -5e-6 lx where π·L = 3142 lx, bench/degenerate_stress). */
   return fmax(sum, 0.0f);

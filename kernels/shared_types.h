@@ -21,6 +21,8 @@ typedef cl_int4 pn_int4;
 #define PN_MAX_ACTIVE_OCCLUDERS 64 /* occluders that can shade one point from one face */
 #define PN_MAX_VISIBLE_PIECES 32   /* visible parameter intervals on one edge */
 #define PN_MAX_CONTACTS 8          /* solids whose surface one point touches (besides its own) */
+#define PN_MAX_WEDGES 2            /* contact solids whose edge or corner one point lies on */
+#define PN_MAX_WEDGE_FACES 4       /* faces of such a solid that limit the point's view */
 #define PN_MAX_CONTOUR_EDGES 256   /* contour edges of all occluders active at one point */
 #define PN_LANES 8                 /* points per work-item, one per float8 lane */
 
