@@ -36,12 +36,34 @@ std::vector<GridReport> evaluateGrids(const Scene& scene,
   const IlluminanceEstimator estimate = estimator.function();
   std::vector<GridReport> reports;
   for (const CalculationGrid* grid : grids) {
-    watch.startGrid(grid->name, grid->positions.size());
+    watch.startGrid(grid->name, grid->size());
     const GridEvaluation evaluation =
         evaluateGrid(scene, *grid, estimate, estimator.batchSize(),
                      [&](std::size_t done, std::size_t total) { watch.update(done, total); });
     watch.finishGrid(evaluation.seconds);
     reports.push_back(makeGridReport(scene, *grid, evaluation));
+  }
+  return reports;
+}
+
+std::vector<GridReport> streamGrids(const Scene& scene,
+                                    const std::vector<const CalculationGrid*>& grids,
+                                    Estimator& estimator, GridStream& stream,
+                                    GridObserver* observer) {
+  GridObserver silent;
+  GridObserver& watch = observer != nullptr ? *observer : silent;
+  const IlluminanceEstimator estimate = estimator.function();
+  std::vector<GridReport> reports;
+  for (const CalculationGrid* grid : grids) {
+    watch.startGrid(grid->name, grid->size());
+    stream.start(*grid);
+    const GridRun run = streamGrid(
+        scene, *grid, estimate, estimator.batchSize(),
+        [&](const GridBatch& batch) { stream.write(batch); },
+        [&](std::size_t done, std::size_t total) { watch.update(done, total); });
+    stream.finish();
+    watch.finishGrid(run.seconds);
+    reports.push_back(streamedGridReport(*grid, run));
   }
   return reports;
 }
