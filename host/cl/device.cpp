@@ -130,13 +130,18 @@ void requireDeviceMemory(const DeviceInfo& device, const std::vector<std::size_t
     total += b;
     largest = std::max(largest, b);
   }
-  const auto mb = [](std::size_t bytes) { return fmt::format("{:.1f} MB", bytes / 1e6); };
+  const auto amount = [](std::size_t bytes) {
+    if (bytes < 10'000) return fmt::format("{} bytes", bytes);
+    if (bytes < 10'000'000) return fmt::format("{:.1f} kB", bytes / 1e3);
+    if (bytes < 10'000'000'000) return fmt::format("{:.1f} MB", bytes / 1e6);
+    return fmt::format("{:.2f} GB", bytes / 1e9);
+  };
   std::string need = fmt::format("{} needs {} of device memory in buffers of up to {}", what,
-                                 mb(total), mb(largest));
-  if (inUse > 0) need += fmt::format(", besides the {} the scene already holds", mb(inUse));
-  throw DeviceMemoryError(
-      fmt::format("{}; {} has {} of global memory and allows {} in one buffer: {}", need,
-                  device.name, mb(device.globalMemory), mb(device.largestAllocation), advice));
+                                 amount(total), amount(largest));
+  if (inUse > 0) need += fmt::format(", besides the {} the scene already holds", amount(inUse));
+  throw DeviceMemoryError(fmt::format(
+      "{}; {} has {} of global memory and allows {} in one buffer: {}", need, device.name,
+      amount(device.globalMemory), amount(device.largestAllocation), advice));
 }
 
 std::vector<DeviceInfo> listDevices() {

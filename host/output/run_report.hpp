@@ -40,9 +40,6 @@ struct RunReport {
   std::vector<GridReport> grids;
 };
 
-// Joins an evaluation with the scene's solid names and the grid's metrics.
-GridReport makeGridReport(const Scene& scene, const CalculationGrid& grid,
-                          const GridEvaluation& evaluation);
 // The report of a streamed grid: its layout, metrics and time, no per-point data.
 GridReport streamedGridReport(const CalculationGrid& grid, const GridRun& run);
 
