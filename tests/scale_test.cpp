@@ -219,7 +219,7 @@ TEST(DeviceMemory, ASceneTooLargeForTheDeviceStopsWithItsNumbersAndNoOutput) {
   // 64 KB of device memory: the room's six slabs fit, and no table may exceed 32 bytes.
   const Measured run = runMeasured(dir.path(), gridRun("out"), "64K,32");
   EXPECT_EQ(run.status, 1) << run.err;
-  EXPECT_NE(run.err.find("penumbra: error: the scene's tables (source faces: 1, occluders: "),
+  EXPECT_NE(run.err.find("penumbra: error: the scene (source faces: 1, occluders: "),
             std::string::npos)
       << run.err;
   EXPECT_NE(run.err.find("of global memory and allows 32 bytes in one buffer: use a smaller scene"),

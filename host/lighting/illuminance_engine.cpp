@@ -48,7 +48,7 @@ struct IlluminanceEngine::State {
         bytes(packed.planes), bytes(packed.edges),          bytes(packed.occluderVertices)};
     compute::requireDeviceMemory(
         d.info(), tables, 0,
-        fmt::format("the scene's tables (source faces: {}, occluders: {})", packed.faces.size(),
+        fmt::format("the scene (source faces: {}, occluders: {})", packed.faces.size(),
                     packed.occluders.size()),
         "use a smaller scene (fewer solids or sources) or a device with more memory (--device)");
     sceneBytes = 0;
