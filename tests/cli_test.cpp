@@ -258,7 +258,8 @@ TEST(Cli, DevicesListsWhatGridCanUse) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto rows = lines(r.out);
   ASSERT_GE(rows.size(), 2u);
-  for (const char* column : {"Index", "Type", "Name", "Platform", "Compute units"}) {
+  for (const char* column :
+       {"Index", "Type", "Name", "Platform", "Compute units", "Memory [MB]", "Largest buffer"}) {
     EXPECT_NE(rows[0].find(column), std::string::npos) << column;
   }
 }

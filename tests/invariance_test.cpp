@@ -44,8 +44,8 @@ Scene sceneWith(const std::vector<Vec3>& source, const std::vector<Vec3>& shelfB
 std::vector<double> floorE(const Scene& scene) {
   std::vector<SamplePoint> points;
   const CalculationGrid& grid = scene.grids.at(0);
-  for (std::size_t i = 0; i < grid.positions.size(); ++i)
-    points.push_back({grid.positions[i], grid.normals[i], -1});
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    points.push_back({grid.position(i), grid.normal(i), -1});
   IlluminanceEngine engine(cpuDevice(), scene);
   return engine.illuminance(points);
 }

@@ -106,11 +106,8 @@ Scene floorAndTable() {
 }
 
 CalculationGrid pointList(const std::vector<Vec3>& positions, const Vec3& normal) {
-  CalculationGrid grid;
-  grid.name = "probes";
-  grid.positions = positions;
-  grid.normals.assign(positions.size(), normal);
-  return grid;
+  return CalculationGrid::pointList("probes", positions,
+                                    std::vector<Vec3>(positions.size(), normal));
 }
 
 TEST(GridEvaluation, FindsTheSolidEachPointLiesOnAndTheOneContainingIt) {

@@ -84,8 +84,8 @@ TEST(OfficeExample, LoadsWithExpectedCounts) {
   EXPECT_EQ(scene.grids[0].kind, GridKind::WorkPlane);
   EXPECT_EQ(scene.grids[1].kind, GridKind::Rect);
   EXPECT_EQ(scene.grids[2].kind, GridKind::Points);
-  EXPECT_EQ(scene.grids[1].positions.size(), 14u * 6u);
-  EXPECT_EQ(scene.grids[2].positions.size(), 5u);
+  EXPECT_EQ(scene.grids[1].size(), 14u * 6u);
+  EXPECT_EQ(scene.grids[2].size(), 5u);
   EXPECT_EQ(scene.materials[solidNamed(scene, "desk-1").material].name, "oak");
 }
 
@@ -241,14 +241,14 @@ TEST(Grids, WorkPlaneFollowsEn12464) {
   EXPECT_EQ(ny, 5);
   EXPECT_EQ(g.columns, nx);
   EXPECT_EQ(g.rows, ny);
-  ASSERT_EQ(g.positions.size(), static_cast<std::size_t>(nx * ny));
+  ASSERT_EQ(g.size(), static_cast<std::size_t>(nx * ny));
   EXPECT_DOUBLE_EQ(g.spacing, std::max(sideX / nx, sideY / ny));
   EXPECT_LE(g.spacing, p);
   // Cell centres, row-major with rows along y.
-  EXPECT_TRUE(g.positions[0].isApprox(Vec3(0.5 + sideX / nx / 2, 0.5 + sideY / ny / 2, 0.8)));
-  EXPECT_TRUE(g.positions[1].isApprox(Vec3(0.5 + 1.5 * sideX / nx, 0.5 + sideY / ny / 2, 0.8)));
-  EXPECT_TRUE(g.positions[nx].isApprox(Vec3(0.5 + sideX / nx / 2, 0.5 + 1.5 * sideY / ny, 0.8)));
-  for (const Vec3& n : g.normals) EXPECT_EQ(n, Vec3::UnitZ());
+  EXPECT_TRUE(g.position(0).isApprox(Vec3(0.5 + sideX / nx / 2, 0.5 + sideY / ny / 2, 0.8)));
+  EXPECT_TRUE(g.position(1).isApprox(Vec3(0.5 + 1.5 * sideX / nx, 0.5 + sideY / ny / 2, 0.8)));
+  EXPECT_TRUE(g.position(nx).isApprox(Vec3(0.5 + sideX / nx / 2, 0.5 + 1.5 * sideY / ny, 0.8)));
+  for (std::size_t i = 0; i < g.size(); ++i) EXPECT_EQ(g.normal(i), Vec3::UnitZ());
 }
 
 TEST(Grids, WorkPlaneDefaultsAndExplicitSpacing) {
@@ -263,12 +263,12 @@ grids:
   const double p = 0.2 * std::pow(5.0, std::log10(9.0));  // 9 × 7 m area
   EXPECT_EQ(a.columns, static_cast<int>(std::ceil(9.0 / p)));
   EXPECT_EQ(a.rows, static_cast<int>(std::ceil(7.0 / p)));
-  EXPECT_DOUBLE_EQ(a.positions[0].z(), 0.8);
+  EXPECT_DOUBLE_EQ(a.position(0).z(), 0.8);
   const CalculationGrid& b = scene.grids[1];
   EXPECT_EQ(b.columns, 20);
   EXPECT_EQ(b.rows, 16);
   EXPECT_DOUBLE_EQ(b.spacing, 0.5);
-  EXPECT_TRUE(b.positions[0].isApprox(Vec3(0.25, 0.25, 0.0)));
+  EXPECT_TRUE(b.position(0).isApprox(Vec3(0.25, 0.25, 0.0)));
 }
 
 TEST(Grids, En12464SpacingClosedForm) {
@@ -291,8 +291,8 @@ grids:
   EXPECT_EQ(g.columns, 8);
   EXPECT_EQ(g.rows, 4);
   EXPECT_DOUBLE_EQ(g.spacing, 0.25);
-  EXPECT_TRUE(g.normals[0].isApprox(Vec3::UnitX()));
-  EXPECT_TRUE(g.positions[0].isApprox(Vec3(0, 0.125, 0.125)));
+  EXPECT_TRUE(g.normal(0).isApprox(Vec3::UnitX()));
+  EXPECT_TRUE(g.position(0).isApprox(Vec3(0, 0.125, 0.125)));
 }
 
 TEST(Grids, InlinePointsAreNormalised) {
@@ -303,10 +303,10 @@ grids:
                                  "test.yaml");
   const CalculationGrid& g = scene.grids[0];
   EXPECT_EQ(g.kind, GridKind::Points);
-  ASSERT_EQ(g.positions.size(), 2u);
-  EXPECT_EQ(g.positions[1], Vec3(4, 5, 6));
-  EXPECT_TRUE(g.normals[0].isApprox(Vec3::UnitZ()));
-  EXPECT_TRUE(g.normals[1].isApprox(Vec3(0.6, 0.8, 0)));
+  ASSERT_EQ(g.size(), 2u);
+  EXPECT_EQ(g.position(1), Vec3(4, 5, 6));
+  EXPECT_TRUE(g.normal(0).isApprox(Vec3::UnitZ()));
+  EXPECT_TRUE(g.normal(1).isApprox(Vec3(0.6, 0.8, 0)));
   EXPECT_EQ(g.spacing, 0.0);
 }
 
@@ -362,14 +362,14 @@ grids:
 )",
                                  "test.yaml");
   const double half = std::sqrt(0.5);
-  EXPECT_NEAR((scene.grids.at(0).normals.at(0) - Vec3(half, 0, half)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((scene.grids.at(0).normal(0) - Vec3(half, 0, half)).norm(), 0.0, 1e-15);
 }
 
 TEST(Pts, OfficeSensorsResolveRelativeToTheScene) {
   const Scene scene = loadScene(kOffice);
   const CalculationGrid& g = scene.grids[2];
-  EXPECT_EQ(g.positions[0], Vec3(1.8, 1.4, 0.75));
-  EXPECT_EQ(g.normals[2], -Vec3::UnitY());
+  EXPECT_EQ(g.position(0), Vec3(1.8, 1.4, 0.75));
+  EXPECT_EQ(g.normal(2), -Vec3::UnitY());
 }
 
 // ---------------------------------------------------------------- sources and solids
@@ -465,7 +465,7 @@ TEST(Cie171, ValidationScenesLoad) {
   EXPECT_EQ(tc511.solids.size(), 2u + 3u + 4u);
   const Scene tc56 = loadScene(kCie171 / "tc5.6.yaml");
   EXPECT_FALSE(tc56.room.has_value());
-  EXPECT_EQ(tc56.grids[1].positions.size(), 8u);
+  EXPECT_EQ(tc56.grids[1].size(), 8u);
   const Scene tc57 = loadScene(kCie171 / "tc5.7.yaml");
   EXPECT_EQ(tc57.solids.size(), 6u + 1u);
 }

@@ -136,8 +136,8 @@ TEST(GridBands, TheWorkPlaneIsTiledAndDrawn) {
   const CalculationGrid& grid = scene.grids.front();
   IlluminanceEngine engine(cpuDevice(), scene);
   std::vector<SamplePoint> points;
-  for (std::size_t i = 0; i < grid.positions.size(); ++i)
-    points.push_back(SamplePoint{grid.positions[i], grid.normals[i], -1});
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    points.push_back(SamplePoint{grid.position(i), grid.normal(i), -1});
   const std::vector<double> e = engine.illuminance(points);
   testing::TempDir dir("penumbra-isobands");
   const viz::IsobandFigure figure =

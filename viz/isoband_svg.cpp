@@ -441,7 +441,8 @@ IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const dou
   }
   IsobandFigure figure;
   TriangleMesh mesh;
-  mesh.vertices = grid.positions;
+  mesh.vertices.reserve(grid.size());
+  for (std::size_t i = 0; i < grid.size(); ++i) mesh.vertices.push_back(grid.position(i));
   const auto at = [&](int c, int r) { return r * grid.columns + c; };
   for (int r = 0; r + 1 < grid.rows; ++r)
     for (int c = 0; c + 1 < grid.columns; ++c) {
@@ -450,7 +451,7 @@ IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const dou
     }
   const double eMax = *std::max_element(illuminance.begin(), illuminance.end());
   figure.levels = isobandLevels(eMax, bands);
-  const Vec3 normal = grid.normals.front();
+  const Vec3 normal = grid.normal(0);
   const IsoBands result =
       isoBands(mesh, illuminance, figure.levels, [&](std::span<const Vec3> points) {
         std::vector<SamplePoint> probes;
@@ -461,9 +462,9 @@ IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const dou
   figure.contourSegments = result.contourSegments.size();
   figure.faces = 1;
   // Plan coordinates: u along the rows, v along the columns, v upwards on the page.
-  const Vec3 origin = grid.positions[at(0, 0)];
-  const Vec3 u = grid.positions[at(grid.columns - 1, 0)] - origin;
-  const Vec3 v = grid.positions[at(0, grid.rows - 1)] - origin;
+  const Vec3 origin = grid.position(at(0, 0));
+  const Vec3 u = grid.position(at(grid.columns - 1, 0)) - origin;
+  const Vec3 v = grid.position(at(0, grid.rows - 1)) - origin;
   const double margin = 20.0, scale = (widthPx - 2 * margin) / u.norm();
   const double height = v.norm() * scale + 2 * margin;
   const auto project = [&](const Vec3& p) {

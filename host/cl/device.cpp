@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "cl/opencl.hpp"
@@ -15,6 +17,42 @@ std::string typeName(cl_device_type type) {
   if (type & CL_DEVICE_TYPE_CPU) return "cpu";
   if (type & CL_DEVICE_TYPE_ACCELERATOR) return "accelerator";
   return "other";
+}
+
+// PENUMBRA_DEVICE_MEMORY=GLOBAL[,LARGEST]: bytes, or with a K, M or G suffix (powers of 1024).
+std::size_t parseBytes(const std::string& text) {
+  std::size_t used = 0;
+  const double value = std::stod(text, &used);
+  double unit = 1.0;
+  const std::string suffix = text.substr(used);
+  if (suffix == "K" || suffix == "k")
+    unit = 1024.0;
+  else if (suffix == "M" || suffix == "m")
+    unit = 1024.0 * 1024.0;
+  else if (suffix == "G" || suffix == "g")
+    unit = 1024.0 * 1024.0 * 1024.0;
+  else if (!suffix.empty())
+    throw std::invalid_argument(text);
+  if (!(value >= 0.0)) throw std::invalid_argument(text);
+  return static_cast<std::size_t>(value * unit);
+}
+
+void applyMemoryLimit(DeviceInfo& info) {
+  const char* limit = std::getenv("PENUMBRA_DEVICE_MEMORY");
+  if (limit == nullptr || *limit == '\0') return;
+  const std::string text(limit);
+  const std::size_t comma = text.find(',');
+  try {
+    const std::size_t global = parseBytes(text.substr(0, comma));
+    const std::size_t largest =
+        comma == std::string::npos ? global : parseBytes(text.substr(comma + 1));
+    info.globalMemory = std::min(info.globalMemory, global);
+    info.largestAllocation = std::min({info.largestAllocation, largest, info.globalMemory});
+  } catch (const std::exception&) {
+    throw std::runtime_error(fmt::format(
+        "PENUMBRA_DEVICE_MEMORY='{}': expected GLOBAL[,LARGEST] in bytes (K, M or G allowed)",
+        text));
+  }
 }
 
 struct Found {
@@ -49,6 +87,10 @@ std::vector<Found> findDevices() {
       info.type = typeName(device.getInfo<CL_DEVICE_TYPE>());
       info.computeUnits = static_cast<int>(device.getInfo<CL_DEVICE_MAX_COMPUTE_UNITS>());
       info.version = device.getInfo<CL_DEVICE_VERSION>();
+      info.globalMemory = static_cast<std::size_t>(device.getInfo<CL_DEVICE_GLOBAL_MEM_SIZE>());
+      info.largestAllocation =
+          static_cast<std::size_t>(device.getInfo<CL_DEVICE_MAX_MEM_ALLOC_SIZE>());
+      applyMemoryLimit(info);
       found.push_back({info, device});
     }
   }
@@ -68,6 +110,38 @@ std::string listing(const std::vector<Found>& found) {
 
 std::string describe(const cl::Error& error) {
   return fmt::format("{} failed (OpenCL error {})", error.what(), error.err());
+}
+
+bool fitsDevice(const DeviceInfo& device, const std::vector<std::size_t>& buffers,
+                std::size_t inUse) {
+  std::size_t total = inUse;
+  for (std::size_t b : buffers) {
+    if (b > device.largestAllocation) return false;
+    total += b;
+  }
+  return total <= device.globalMemory;
+}
+
+void requireDeviceMemory(const DeviceInfo& device, const std::vector<std::size_t>& buffers,
+                         std::size_t inUse, const std::string& what, const std::string& advice) {
+  if (fitsDevice(device, buffers, inUse)) return;
+  std::size_t total = 0, largest = 0;
+  for (std::size_t b : buffers) {
+    total += b;
+    largest = std::max(largest, b);
+  }
+  const auto amount = [](std::size_t bytes) {
+    if (bytes < 10'000) return fmt::format("{} bytes", bytes);
+    if (bytes < 10'000'000) return fmt::format("{:.1f} kB", bytes / 1e3);
+    if (bytes < 10'000'000'000) return fmt::format("{:.1f} MB", bytes / 1e6);
+    return fmt::format("{:.2f} GB", bytes / 1e9);
+  };
+  std::string need = fmt::format("{} needs {} of device memory in buffers of up to {}", what,
+                                 amount(total), amount(largest));
+  if (inUse > 0) need += fmt::format(", besides the {} the scene already holds", amount(inUse));
+  throw DeviceMemoryError(fmt::format(
+      "{}; {} has {} of global memory and allows {} in one buffer: {}", need, device.name,
+      amount(device.globalMemory), amount(device.largestAllocation), advice));
 }
 
 std::vector<DeviceInfo> listDevices() {

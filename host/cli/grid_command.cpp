@@ -4,6 +4,8 @@
 
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
+#include <optional>
 
 #include "cli/exit_status.hpp"
 #include "cli/progress.hpp"
@@ -29,6 +31,24 @@ double secondsSince(Clock::time_point start) {
 EstimatorOptions estimatorOptions(const GridOptions& options) {
   return EstimatorOptions{options.device, options.reference, options.referenceN, options.culling};
 }
+
+// Each grid's .csv and .res, written into the staging directory as its batches come.
+class StagedGridFiles : public GridStream {
+ public:
+  StagedGridFiles(const std::filesystem::path& directory, const Scene& scene)
+      : directory_(directory), scene_(scene) {}
+  void start(const CalculationGrid& grid) override { files_.emplace(directory_, scene_, grid); }
+  void write(const GridBatch& batch) override { files_->write(batch); }
+  void finish() override {
+    files_->close();
+    files_.reset();
+  }
+
+ private:
+  std::filesystem::path directory_;
+  const Scene& scene_;
+  std::optional<GridFileWriter> files_;
+};
 
 int run(const GridOptions& options) {
   const auto start = Clock::now();
@@ -56,11 +76,18 @@ int run(const GridOptions& options) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
   }
 
+  // The files are written while the grids are computed (so that no grid is ever held whole), into
+  // a staging directory that appears under the output's name only once everything is written.
+  std::vector<std::string> gridNames;
+  for (const CalculationGrid* grid : grids) gridNames.push_back(grid->name);
+  resultFileNames(gridNames);  // refuses clashing names before anything is created
+  StagedDirectory staged(options.output);
+  StagedGridFiles files(staged.staging(), scene);
   ProgressLine progress(!options.quiet);
-  report.grids = evaluateGrids(scene, grids, estimator, &progress);
+  report.grids = streamGrids(scene, grids, estimator, files, &progress);
   report.totalSeconds = secondsSince(start);
-
-  writeResults(report, options.output);
+  writeSummaryFile(report, staged.staging());
+  staged.commit();
   if (!options.quiet) {
     fmt::print("{}", summaryTable(report));
     fmt::print("results in {}\n", normalizedTarget(options.output).string());

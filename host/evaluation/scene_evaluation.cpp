@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -28,20 +29,68 @@ std::vector<const CalculationGrid*> selectGrids(const Scene& scene,
   return selected;
 }
 
-std::vector<GridReport> evaluateGrids(const Scene& scene,
-                                      const std::vector<const CalculationGrid*>& grids,
-                                      Estimator& estimator, GridObserver* observer) {
+std::vector<GridReport> streamGrids(const Scene& scene,
+                                    const std::vector<const CalculationGrid*>& grids,
+                                    Estimator& estimator, GridStream& stream,
+                                    GridObserver* observer) {
   GridObserver silent;
   GridObserver& watch = observer != nullptr ? *observer : silent;
   const IlluminanceEstimator estimate = estimator.function();
   std::vector<GridReport> reports;
   for (const CalculationGrid* grid : grids) {
-    watch.startGrid(grid->name, grid->positions.size());
-    const GridEvaluation evaluation =
-        evaluateGrid(scene, *grid, estimate, estimator.batchSize(),
-                     [&](std::size_t done, std::size_t total) { watch.update(done, total); });
-    watch.finishGrid(evaluation.seconds);
-    reports.push_back(makeGridReport(scene, *grid, evaluation));
+    watch.startGrid(grid->name, grid->size());
+    stream.start(*grid);
+    const GridRun run = streamGrid(
+        scene, *grid, estimate, estimator.batchSize(),
+        [&](const GridBatch& batch) { stream.write(batch); },
+        [&](std::size_t done, std::size_t total) { watch.update(done, total); });
+    stream.finish();
+    watch.finishGrid(run.seconds);
+    reports.push_back(streamedGridReport(*grid, run));
+  }
+  return reports;
+}
+
+namespace {
+
+// Keeps every point of every grid, in the reports' form.
+class KeepingStream : public GridStream {
+ public:
+  explicit KeepingStream(const Scene& scene) : scene_(scene) {}
+  void start(const CalculationGrid& grid) override {
+    grid_ = &grid;
+    kept.emplace_back();
+  }
+  void write(const GridBatch& batch) override {
+    GridReport& report = kept.back();
+    for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
+      const std::size_t i = batch.first + k;
+      const int inside = batch.inside[k];
+      report.points.push_back(SamplePoint{grid_->position(i), grid_->normal(i), batch.onSolid[k]});
+      report.insideSolids.push_back(inside >= 0 ? scene_.solids.at(inside).name : std::string());
+      report.illuminance.push_back(batch.illuminance[k]);
+    }
+  }
+  void finish() override {}
+
+  std::vector<GridReport> kept;  // per grid: points, insideSolids and illuminance
+
+ private:
+  const Scene& scene_;
+  const CalculationGrid* grid_ = nullptr;
+};
+
+}  // namespace
+
+std::vector<GridReport> evaluateGrids(const Scene& scene,
+                                      const std::vector<const CalculationGrid*>& grids,
+                                      Estimator& estimator, GridObserver* observer) {
+  KeepingStream keep(scene);
+  std::vector<GridReport> reports = streamGrids(scene, grids, estimator, keep, observer);
+  for (std::size_t g = 0; g < reports.size(); ++g) {
+    reports[g].points = std::move(keep.kept[g].points);
+    reports[g].insideSolids = std::move(keep.kept[g].insideSolids);
+    reports[g].illuminance = std::move(keep.kept[g].illuminance);
   }
   return reports;
 }

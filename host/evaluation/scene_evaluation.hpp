@@ -26,9 +26,27 @@ class GridObserver {
 std::vector<const CalculationGrid*> selectGrids(const Scene& scene,
                                                 const std::vector<std::string>& wanted);
 
-// E and the metrics of each grid, with `estimator` answering for `scene`.
+// E and the metrics of each grid, with `estimator` answering for `scene`; every point is kept in
+// the reports (a sweep's case plots draw them).
 std::vector<GridReport> evaluateGrids(const Scene& scene,
                                       const std::vector<const CalculationGrid*>& grids,
                                       Estimator& estimator, GridObserver* observer = nullptr);
+
+// Where the points of each grid go while they are computed: start() before a grid's first batch,
+// its batches in grid order, finish() after its last.
+class GridStream {
+ public:
+  virtual ~GridStream() = default;
+  virtual void start(const CalculationGrid& grid) = 0;
+  virtual void write(const GridBatch& batch) = 0;
+  virtual void finish() = 0;
+};
+
+// The same, each grid's points handed to `stream` batch by batch and not kept: memory does not
+// grow with the number of points. The reports hold layouts, metrics and times only.
+std::vector<GridReport> streamGrids(const Scene& scene,
+                                    const std::vector<const CalculationGrid*>& grids,
+                                    Estimator& estimator, GridStream& stream,
+                                    GridObserver* observer = nullptr);
 
 }  // namespace penumbra

@@ -2,83 +2,237 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "geometry/tolerance.hpp"
 
 namespace penumbra {
 
-GridSamples gridSamples(const Scene& scene, const CalculationGrid& grid) {
-  if (grid.positions.size() != grid.normals.size()) {
-    throw std::invalid_argument("grid '" + grid.name + "': one normal per position is needed");
-  }
+namespace {
+
+// A solid's vertex average c lies inside it, at least rho from every face plane. Every point x
+// with n·x − d ≤ t for all faces (what faceContaining and containsStrictly accept at tolerance
+// t) lies in c + (1 + t/rho)·(P − c): y = c + (x − c)/(1 + t/rho) is inside P, since for a face
+// at distance a ≥ rho from c, n·y − d ≤ t·(1 − a/rho)/(1 + t/rho) ≤ 0. So the box of the solid's
+// vertices, scaled about c by 1 + t/rho, holds every such point; it is grown by two more t for
+// the rounding of the planes and of the tests. A solid too thin to bound this way (rho ≈ 0)
+// is tested at every point.
+constexpr double kMaxBoxScale = 1e3;
+
+bool boundingBoxOf(const ConvexPolyhedron& shape, double tolerance, BoundingBox& box) {
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& v : shape.vertices()) c += v;
+  c /= static_cast<double>(shape.vertices().size());
+  double rho = std::numeric_limits<double>::infinity();
+  for (const auto& face : shape.faces()) rho = std::min(rho, -face.plane.signedDistance(c));
+  const double scale = 1.0 + tolerance / rho;
+  if (!(rho > 0.0) || !(scale <= kMaxBoxScale)) return false;
+  BoundingBox vertices;
+  for (const Vec3& v : shape.vertices()) vertices.add(v);
+  box.lo = c + scale * (vertices.lo - c);
+  box.hi = c + scale * (vertices.hi - c);
+  box = box.grown(2.0 * tolerance);
+  return box.lo.allFinite() && box.hi.allFinite();
+}
+
+bool holds(const BoundingBox& box, const Vec3& p) {
+  return (box.lo.array() <= p.array()).all() && (p.array() <= box.hi.array()).all();
+}
+
+}  // namespace
+
+SolidLocator::SolidLocator(const Scene& scene) : scene_(&scene) {
   // Whether a grid point lies on a surface is a question about what a person typed (a sensor at
   // z = 0.75 on a desk top at 0.75): the input tolerance, relative to the scene's size, like the
   // loader's "on its wall" checks.
-  const double tolerance = Tolerance::kRelativeInput * std::max(scene.size(), 1.0);
-  GridSamples samples;
-  samples.points.reserve(grid.positions.size());
-  samples.inside.reserve(grid.positions.size());
-  for (std::size_t i = 0; i < grid.positions.size(); ++i) {
-    SamplePoint point;
-    point.position = grid.positions[i];
-    point.normal = grid.normals[i];
-    int inside = -1;
-    double bestAlignment = -2.0;
-    for (int s = 0; s < static_cast<int>(scene.solids.size()); ++s) {
-      const ConvexPolyhedron& shape = scene.solids[s].shape;
-      if (shape.empty()) continue;
-      // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
-      // one whose face looks where the point looks: the other one must still be able to shade it.
-      const int face = shape.faceContaining(point.position, point.normal, tolerance);
-      if (face >= 0) {
-        const double alignment = shape.faces()[face].plane.normal.dot(point.normal);
-        if (alignment > bestAlignment) {
-          bestAlignment = alignment;
-          point.solid = s;
-        }
-      }
-      if (inside < 0 && shape.containsStrictly(point.position, tolerance)) inside = s;
+  tolerance_ = Tolerance::kRelativeInput * std::max(scene.size(), 1.0);
+  const int count = static_cast<int>(scene.solids.size());
+  boxes_.resize(count);
+  std::vector<int> bounded;
+  for (int s = 0; s < count; ++s) {
+    const ConvexPolyhedron& shape = scene.solids[s].shape;
+    if (shape.empty()) continue;  // an empty box: never a candidate, like the test it skips
+    if (boundingBoxOf(shape, tolerance_, boxes_[s])) {
+      bounds_.add(boxes_[s].lo);
+      bounds_.add(boxes_[s].hi);
+      bounded.push_back(s);
+    } else {
+      boxes_[s] = BoundingBox{};  // empty: tested at every point
+      unbounded_.push_back(s);
     }
+  }
+  if (bounded.empty()) return;
+  // About as many cells as solids, cubes as far as the scene's extent allows.
+  const Vec3 extent = (bounds_.hi - bounds_.lo).cwiseMax(1e-3 * (bounds_.hi - bounds_.lo).norm());
+  const double target = std::clamp<double>(static_cast<double>(bounded.size()), 1.0, 1 << 18);
+  const double edge = std::cbrt(extent.prod() / target);
+  for (int k = 0; k < 3; ++k) {
+    cells_[k] = std::clamp(static_cast<int>(std::ceil(extent[k] / edge)), 1, 256);
+  }
+  const std::size_t cellCount = static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2];
+  cellSolids_.resize(cellCount);
+  const auto cellOf = [&](const Vec3& p, int k) {
+    const double f = (p[k] - bounds_.lo[k]) / (bounds_.hi[k] - bounds_.lo[k]) * cells_[k];
+    return std::clamp(static_cast<int>(std::floor(f)), 0, cells_[k] - 1);
+  };
+  for (int s : bounded) {
+    int lo[3], hi[3];
+    std::size_t covered = 1;
+    for (int k = 0; k < 3; ++k) {
+      lo[k] = cellOf(boxes_[s].lo, k);
+      hi[k] = cellOf(boxes_[s].hi, k);
+      covered *= static_cast<std::size_t>(hi[k] - lo[k] + 1);
+    }
+    // A solid spanning much of the scene (a room's slab) would fill many cells: it is tested at
+    // every point instead, which costs the same and keeps the cells small.
+    if (covered > 64 && covered * 8 > cellCount) {
+      unbounded_.insert(std::upper_bound(unbounded_.begin(), unbounded_.end(), s), s);
+      continue;
+    }
+    for (int z = lo[2]; z <= hi[2]; ++z)
+      for (int y = lo[1]; y <= hi[1]; ++y)
+        for (int x = lo[0]; x <= hi[0]; ++x)
+          cellSolids_[(static_cast<std::size_t>(z) * cells_[1] + y) * cells_[0] + x].push_back(s);
+  }
+}
+
+std::span<const int> SolidLocator::candidates(const Vec3& p) const {
+  if (cellSolids_.empty() || !holds(bounds_, p)) return {};
+  std::size_t index = 0;
+  for (int k = 2; k >= 0; --k) {
+    const double f = (p[k] - bounds_.lo[k]) / (bounds_.hi[k] - bounds_.lo[k]) * cells_[k];
+    index = index * cells_[k] + std::clamp(static_cast<int>(std::floor(f)), 0, cells_[k] - 1);
+  }
+  return cellSolids_[index];
+}
+
+int SolidLocator::classify(SamplePoint& point) const {
+  const std::span<const int> near = candidates(point.position);
+  int inside = -1;
+  double bestAlignment = -2.0;
+  point.solid = -1;
+  const auto test = [&](int s) {
+    if (!boxes_[s].empty() && !holds(boxes_[s], point.position)) return;
+    const ConvexPolyhedron& shape = scene_->solids[s].shape;
+    // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
+    // one whose face looks where the point looks: the other one must still be able to shade it.
+    const int face = shape.faceContaining(point.position, point.normal, tolerance_);
+    if (face >= 0) {
+      const double alignment = shape.faces()[face].plane.normal.dot(point.normal);
+      if (alignment > bestAlignment) {
+        bestAlignment = alignment;
+        point.solid = s;
+      }
+    }
+    if (inside < 0 && shape.containsStrictly(point.position, tolerance_)) inside = s;
+  };
+  // Both lists ascend: merged, the solids are tested in scene order, as a plain loop would.
+  auto a = near.begin();
+  auto b = unbounded_.begin();
+  while (a != near.end() || b != unbounded_.end()) {
+    if (b == unbounded_.end() || (a != near.end() && *a < *b)) {
+      test(*a++);
+    } else {
+      test(*b++);
+    }
+  }
+  return inside;
+}
+
+GridSamples gridSamples(const SolidLocator& solids, const CalculationGrid& grid, std::size_t first,
+                        std::size_t count) {
+  const std::size_t end = first + std::min(count, grid.size() - std::min(first, grid.size()));
+  GridSamples samples;
+  samples.points.reserve(end - std::min(first, end));
+  samples.inside.reserve(end - std::min(first, end));
+  for (std::size_t i = first; i < end; ++i) {
+    SamplePoint point{grid.position(i), grid.normal(i), -1};
+    samples.inside.push_back(solids.classify(point));
     samples.points.push_back(point);
-    samples.inside.push_back(inside);
   }
   return samples;
+}
+
+GridSamples gridSamples(const Scene& scene, const CalculationGrid& grid) {
+  return gridSamples(SolidLocator(scene), grid);
+}
+
+GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
+                   const IlluminanceEstimator& estimate, std::size_t batchSize,
+                   const GridBatchSink& sink, const ProgressCallback& progress) {
+  const auto start = std::chrono::steady_clock::now();
+  GridRun run;
+  run.name = grid.name;
+  const SolidLocator solids(scene);
+  const std::size_t n = grid.size();
+  batchSize = std::max<std::size_t>(batchSize, 1);
+  GridMetricsSum sums;
+
+  // One chunk of consecutive grid points: up to batchSize of them outside solids (the
+  // estimator's batch) and the inside points among them.
+  std::vector<SamplePoint> outside;
+  std::vector<std::size_t> outsideAt;  // offsets in the chunk
+  std::vector<int> inside, onSolid;
+  std::vector<double> e;
+  if (progress) progress(0, n);
+  std::size_t next = 0;
+  while (next < n) {
+    const std::size_t first = next;
+    outside.clear();
+    outsideAt.clear();
+    inside.clear();
+    onSolid.clear();
+    while (next < n && outside.size() < batchSize) {
+      SamplePoint point{grid.position(next), grid.normal(next), -1};
+      const int in = solids.classify(point);
+      if (in < 0) {
+        outsideAt.push_back(inside.size());
+        outside.push_back(point);
+      }
+      inside.push_back(in);
+      onSolid.push_back(point.solid);
+      ++next;
+      // A run of inside points with nothing waiting for the estimator goes on at once.
+      if (outside.empty() && inside.size() >= batchSize) break;
+    }
+    e.assign(inside.size(), 0.0);
+    if (!outside.empty()) {
+      const std::vector<double> values = estimate(outside);
+      if (values.size() != outside.size()) {
+        throw std::logic_error("estimator returned the wrong number of values");
+      }
+      for (std::size_t k = 0; k < values.size(); ++k) e[outsideAt[k]] = values[k];
+    }
+    for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
+    if (sink) sink(GridBatch{first, e, inside, onSolid});
+    if (progress) progress(next, n);
+  }
+  run.metrics = sums.metrics(grid.spacing);
+  run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return run;
 }
 
 GridEvaluation evaluateGrid(const Scene& scene, const CalculationGrid& grid,
                             const IlluminanceEstimator& estimate, std::size_t batchSize,
                             const ProgressCallback& progress) {
   GridEvaluation evaluation;
-  evaluation.name = grid.name;
-  evaluation.samples = gridSamples(scene, grid);
-  const auto& points = evaluation.samples.points;
-  const auto& inside = evaluation.samples.inside;
-  evaluation.illuminance.assign(points.size(), 0.0);
-
-  // Only the points outside every solid go to the estimator; `index` maps them back.
-  std::vector<SamplePoint> outside;
-  std::vector<std::size_t> index;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    if (inside[i] >= 0) continue;
-    outside.push_back(points[i]);
-    index.push_back(i);
-  }
-
-  const auto start = std::chrono::steady_clock::now();
-  batchSize = std::max<std::size_t>(batchSize, 1);
-  const std::size_t skipped = points.size() - outside.size();
-  if (progress) progress(skipped, points.size());
-  for (std::size_t first = 0; first < outside.size(); first += batchSize) {
-    const std::size_t count = std::min(batchSize, outside.size() - first);
-    const std::vector<double> e =
-        estimate(std::span<const SamplePoint>(outside).subspan(first, count));
-    if (e.size() != count) throw std::logic_error("estimator returned the wrong number of values");
-    for (std::size_t k = 0; k < count; ++k) evaluation.illuminance[index[first + k]] = e[k];
-    if (progress) progress(skipped + first + count, points.size());
-  }
-  evaluation.seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  evaluation.samples.points.reserve(grid.size());
+  evaluation.samples.inside.reserve(grid.size());
+  evaluation.illuminance.reserve(grid.size());
+  const GridBatchSink keep = [&](const GridBatch& batch) {
+    for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
+      const std::size_t i = batch.first + k;
+      evaluation.samples.points.push_back(
+          SamplePoint{grid.position(i), grid.normal(i), batch.onSolid[k]});
+      evaluation.samples.inside.push_back(batch.inside[k]);
+      evaluation.illuminance.push_back(batch.illuminance[k]);
+    }
+  };
+  const GridRun run = streamGrid(scene, grid, estimate, batchSize, keep, progress);
+  evaluation.name = run.name;
+  evaluation.metrics = run.metrics;
+  evaluation.seconds = run.seconds;
   return evaluation;
 }
 

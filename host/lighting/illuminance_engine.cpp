@@ -13,6 +13,15 @@ namespace penumbra {
 
 using compute::DeviceBuffer;
 
+namespace {
+
+template <class T>
+std::size_t bytes(const std::vector<T>& v) {
+  return v.size() * sizeof(T);
+}
+
+}  // namespace
+
 struct IlluminanceEngine::State {
   compute::Device* device = nullptr;
   EngineOptions options;
@@ -20,6 +29,7 @@ struct IlluminanceEngine::State {
   KernelScene packed;
   compute::Program program;
   DeviceBuffer faces, sourceVertices, occluders, planes, edges, occluderVertices;
+  std::size_t sceneBytes = 0;  // what the buffers above take on the device
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d),
@@ -33,6 +43,16 @@ struct IlluminanceEngine::State {
     compute::Device& d = *device;
     shadows = buildSceneShadows(scene);
     packed = packScene(scene, shadows);
+    const std::vector<std::size_t> tables = {
+        bytes(packed.faces),  bytes(packed.sourceVertices), bytes(packed.occluders),
+        bytes(packed.planes), bytes(packed.edges),          bytes(packed.occluderVertices)};
+    compute::requireDeviceMemory(
+        d.info(), tables, 0,
+        fmt::format("the scene (source faces: {}, occluders: {})", packed.faces.size(),
+                    packed.occluders.size()),
+        "use a smaller scene (fewer solids or sources) or a device with more memory (--device)");
+    sceneBytes = 0;
+    for (std::size_t b : tables) sceneBytes += b;
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
     sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
@@ -102,15 +122,41 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
                                            state_->options.culling, 2.0 * state_->packed.epsLength);
 
   compute::Device& d = *state_->device;
+  const std::size_t outValues = bySource ? padded * std::max(result.sourceCount, 1) : padded;
+  const std::size_t classBytes = padded * std::max(result.sourceCount, 1);
+  const std::vector<std::size_t> batch = {
+      padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
+      padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
+      padded * sizeof(cl_int),   bytes(table.entries),       bytes(table.candidates),
+      outValues * sizeof(float), workItems * sizeof(cl_int), classBytes};
+  if (!compute::fitsDevice(d.info(), batch, state_->sceneBytes)) {
+    // Too many points for the device at once: halves cut on a work-group boundary give the same
+    // work-items, and so the same values, as one launch would.
+    constexpr std::size_t kGroupPoints = PN_LANES * kWorkGroup;
+    if (n > kGroupPoints) {
+      const std::size_t half = (n / 2 + kGroupPoints - 1) / kGroupPoints * kGroupPoints;
+      IlluminanceResult first = evaluate(points.first(half), bySource);
+      IlluminanceResult second = evaluate(points.subspan(half), bySource);
+      const auto append = [](auto& to, const auto& from) {
+        to.insert(to.end(), from.begin(), from.end());
+      };
+      append(first.illuminance, second.illuminance);
+      append(first.bySource, second.bySource);
+      append(first.shadowClass, second.shadowClass);
+      return first;
+    }
+    compute::requireDeviceMemory(
+        d.info(), batch, state_->sceneBytes, fmt::format("a batch of {} points", n),
+        "even the smallest batch does not fit beside the scene; use a smaller scene or a device "
+        "with more memory (--device)");
+  }
   DeviceBuffer pointBuffers[6];
   for (int k = 0; k < 6; ++k) pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
   DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
   DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
-  const std::size_t outValues = bySource ? padded * std::max(result.sourceCount, 1) : padded;
   DeviceBuffer out = DeviceBuffer::allocate(d, outValues * sizeof(float));
   DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
-  const std::size_t classBytes = padded * std::max(result.sourceCount, 1);
   DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
 
   compute::KernelLaunch launch(state_->program, "illuminance");

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <set>
 #include <stdexcept>
 
@@ -82,14 +83,20 @@ GridKind gridKindFromName(const std::string& name) {
 }
 
 std::vector<std::string> resultFileNames(const RunReport& report) {
+  std::vector<std::string> gridNames;
+  for (const GridReport& grid : report.grids) gridNames.push_back(grid.name);
+  return resultFileNames(gridNames);
+}
+
+std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNames) {
   std::vector<std::string> names;
   std::set<std::string> stems;
-  for (const GridReport& grid : report.grids) {
-    const std::string stem = gridFileStem(grid.name);
+  for (const std::string& name : gridNames) {
+    const std::string stem = gridFileStem(name);
     if (!stems.insert(stem).second) {
       throw std::runtime_error(fmt::format(
-          "grid '{}' would be written to {}.csv, which another grid uses; rename one of them",
-          grid.name, stem));
+          "grid '{}' would be written to {}.csv, which another grid uses; rename one of them", name,
+          stem));
     }
     names.push_back(stem + ".csv");
     names.push_back(stem + ".res");
@@ -98,18 +105,80 @@ std::vector<std::string> resultFileNames(const RunReport& report) {
   return names;
 }
 
+namespace {
+
+constexpr const char* kCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
+
+// One row of a grid's .csv and one line of its .res: the only place their format is spelt out.
+void appendCsvRow(fmt::memory_buffer& out, const Vec3& p, const Vec3& n, double e,
+                  const std::string& insideField) {
+  fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(),
+                 n.y(), n.z(), e, insideField);
+}
+
+void appendResLine(fmt::memory_buffer& out, double e) {
+  fmt::format_to(std::back_inserter(out), "{}\n", e);
+}
+
+void flush(std::ostream& out, fmt::memory_buffer& buffer) {
+  out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+  buffer.clear();
+}
+
+}  // namespace
+
 void writeGridCsv(std::ostream& out, const GridReport& grid) {
-  out << "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
+  out << kCsvHeader;
+  fmt::memory_buffer buffer;
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
-    const Vec3& p = grid.points[i].position;
-    const Vec3& n = grid.points[i].normal;
-    out << fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(),
-                       grid.illuminance[i], csvField(grid.insideSolids[i]));
+    appendCsvRow(buffer, grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
+                 csvField(grid.insideSolids[i]));
+    if (buffer.size() > (1u << 20)) flush(out, buffer);
   }
+  flush(out, buffer);
 }
 
 void writeGridRes(std::ostream& out, const GridReport& grid) {
-  for (double e : grid.illuminance) out << fmt::format("{}\n", e);
+  fmt::memory_buffer buffer;
+  for (double e : grid.illuminance) appendResLine(buffer, e);
+  flush(out, buffer);
+}
+
+GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
+                               const CalculationGrid& grid)
+    : grid_(&grid) {
+  for (const Solid& solid : scene.solids) insideNames_.push_back(csvField(solid.name));
+  const std::string stem = gridFileStem(grid.name);
+  csvPath_ = directory / (stem + ".csv");
+  resPath_ = directory / (stem + ".res");
+  csv_.open(csvPath_, std::ios::binary);
+  if (!csv_) throw std::runtime_error("cannot create " + csvPath_.string());
+  res_.open(resPath_, std::ios::binary);
+  if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
+  csv_ << kCsvHeader;
+}
+
+void GridFileWriter::write(const GridBatch& batch) {
+  const std::string none;
+  fmt::memory_buffer csv, res;
+  for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
+    const std::size_t i = batch.first + k;
+    const int inside = batch.inside[k];
+    appendCsvRow(csv, grid_->position(i), grid_->normal(i), batch.illuminance[k],
+                 inside >= 0 ? insideNames_.at(inside) : none);
+    appendResLine(res, batch.illuminance[k]);
+  }
+  flush(csv_, csv);
+  flush(res_, res);
+  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
+  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+}
+
+void GridFileWriter::close() {
+  csv_.close();
+  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
+  res_.close();
+  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
 }
 
 nlohmann::json summaryJson(const RunReport& report) {
@@ -166,6 +235,10 @@ void writeResultFiles(const RunReport& report, const std::filesystem::path& dire
     writeFile(directory / (stem + ".csv"), [&](std::ostream& out) { writeGridCsv(out, grid); });
     writeFile(directory / (stem + ".res"), [&](std::ostream& out) { writeGridRes(out, grid); });
   }
+  writeSummaryFile(report, directory);
+}
+
+void writeSummaryFile(const RunReport& report, const std::filesystem::path& directory) {
   writeFile(directory / "summary.json",
             [&](std::ostream& out) { out << summaryJson(report).dump(2) << "\n"; });
 }

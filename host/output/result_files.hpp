@@ -6,6 +6,7 @@
 //   names
 // Numbers are written in the shortest form that reads back to the same double.
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "lighting/grid_evaluation.hpp"
 #include "output/run_report.hpp"
 
 namespace penumbra {
@@ -30,13 +32,36 @@ nlohmann::json parameterJson(const ParameterValues& values);
 std::string gridKindName(GridKind kind);
 GridKind gridKindFromName(const std::string& name);
 
-// The names of the files writeResults creates for `report`. Throws std::runtime_error when two
-// grids would share a file.
+// The names of the files writeResults creates for `report` (or for grids of these names). Throws
+// std::runtime_error when two grids would share a file.
 std::vector<std::string> resultFileNames(const RunReport& report);
+std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNames);
 
 void writeGridCsv(std::ostream& out, const GridReport& grid);
 void writeGridRes(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
+
+// The .csv and .res files of one grid, written batch by batch while the grid is evaluated
+// (streamGrid), so that no per-point data outlives its batch; the bytes are those writeGridCsv
+// and writeGridRes write for the same values. Every solid of `scene` must outlive it.
+class GridFileWriter {
+ public:
+  // Creates <directory>/<stem>.csv and .res (gridFileStem) and writes the CSV header.
+  GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
+                 const CalculationGrid& grid);
+  void write(const GridBatch& batch);
+  // Flushes and closes both files; throws std::runtime_error naming a file that failed.
+  void close();
+
+ private:
+  const CalculationGrid* grid_;
+  std::vector<std::string> insideNames_;  // per solid, as a CSV field
+  std::filesystem::path csvPath_, resPath_;
+  std::ofstream csv_, res_;
+};
+
+// Writes summary.json (summaryJson) into `directory`.
+void writeSummaryFile(const RunReport& report, const std::filesystem::path& directory);
 
 // Writes every file of the run into the existing `directory`, as they are (a sweep's case folder
 // is staged as a whole by its caller).

@@ -18,9 +18,11 @@ struct GridReport {
   // row-major, `columns` along u, `rows` along v; 0 × 0 for point lists.
   GridKind kind = GridKind::Points;
   int columns = 0, rows = 0;
-  std::vector<SamplePoint> points;        // in the grid's order
-  std::vector<std::string> insideSolids;  // per point: the containing solid's name, "" for none
-  std::vector<double> illuminance;        // lx per point; 0 inside solids
+  // Per point, in the grid's order. Empty when the points went to the files batch by batch
+  // (`penumbra grid`, streamGrid): summary.json and the table need only the rest.
+  std::vector<SamplePoint> points;
+  std::vector<std::string> insideSolids;  // the containing solid's name, "" for none
+  std::vector<double> illuminance;        // lx; 0 inside solids
   GridMetrics metrics;
   double seconds = 0.0;  // time spent computing E for this grid
 };
@@ -38,8 +40,7 @@ struct RunReport {
   std::vector<GridReport> grids;
 };
 
-// Joins an evaluation with the scene's solid names and the grid's metrics.
-GridReport makeGridReport(const Scene& scene, const CalculationGrid& grid,
-                          const GridEvaluation& evaluation);
+// The report of a streamed grid: its layout, metrics and time, no per-point data.
+GridReport streamedGridReport(const CalculationGrid& grid, const GridRun& run);
 
 }  // namespace penumbra

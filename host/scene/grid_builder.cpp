@@ -23,20 +23,10 @@ CalculationGrid planarGrid(const std::string& name, GridKind kind, const Vec3& o
                             fmt::format("{:.0f}", points) +
                             " points, more than the limit of 10 million");
   }
-  CalculationGrid grid;
-  grid.name = name;
-  grid.kind = kind;
-  grid.columns = cellCount(u.norm(), maxSpacing);
-  grid.rows = cellCount(v.norm(), maxSpacing);
-  grid.spacing = std::max(u.norm() / grid.columns, v.norm() / grid.rows);
-  const Vec3 normal = u.cross(v).normalized();
-  for (int j = 0; j < grid.rows; ++j) {
-    for (int i = 0; i < grid.columns; ++i) {
-      grid.positions.push_back(origin + (i + 0.5) / grid.columns * u + (j + 0.5) / grid.rows * v);
-      grid.normals.push_back(normal);
-    }
-  }
-  return grid;
+  const int columns = cellCount(u.norm(), maxSpacing);
+  const int rows = cellCount(v.norm(), maxSpacing);
+  const double spacing = std::max(u.norm() / columns, v.norm() / rows);
+  return CalculationGrid::planar(name, kind, origin, u, v, columns, rows, spacing);
 }
 
 CalculationGrid workPlane(const GridSpec& spec, const WorkPlaneSpec& plane,
@@ -84,12 +74,7 @@ CalculationGrid rectGrid(const GridSpec& spec, const RectGridSpec& rect,
 }
 
 CalculationGrid pointGrid(const GridSpec& spec, const PointsSpec& points) {
-  CalculationGrid grid;
-  grid.name = spec.name;
-  grid.kind = GridKind::Points;
-  grid.positions = points.positions;
-  grid.normals = points.normals;
-  return grid;
+  return CalculationGrid::pointList(spec.name, points.positions, points.normals);
 }
 
 }  // namespace

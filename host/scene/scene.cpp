@@ -2,8 +2,58 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 
 namespace penumbra {
+
+CalculationGrid CalculationGrid::planar(std::string name, GridKind kind, const Vec3& origin,
+                                        const Vec3& u, const Vec3& v, int columns, int rows,
+                                        double spacing) {
+  if (kind == GridKind::Points || columns < 1 || rows < 1) {
+    throw std::invalid_argument("a planar grid needs a planar kind and at least 1 × 1 cells");
+  }
+  CalculationGrid grid;
+  grid.name = std::move(name);
+  grid.kind = kind;
+  grid.spacing = spacing;
+  grid.columns = columns;
+  grid.rows = rows;
+  grid.origin_ = origin;
+  grid.u_ = u;
+  grid.v_ = v;
+  grid.planeNormal_ = u.cross(v).normalized();
+  return grid;
+}
+
+CalculationGrid CalculationGrid::pointList(std::string name, std::vector<Vec3> positions,
+                                           std::vector<Vec3> normals) {
+  if (positions.size() != normals.size()) {
+    throw std::invalid_argument("grid '" + name + "': one normal per position is needed");
+  }
+  CalculationGrid grid;
+  grid.name = std::move(name);
+  grid.kind = GridKind::Points;
+  grid.positions_ = std::move(positions);
+  grid.normals_ = std::move(normals);
+  return grid;
+}
+
+std::size_t CalculationGrid::size() const {
+  if (kind == GridKind::Points) return positions_.size();
+  return static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
+}
+
+Vec3 CalculationGrid::position(std::size_t i) const {
+  if (kind == GridKind::Points) return positions_[i];
+  const int column = static_cast<int>(i % static_cast<std::size_t>(columns));
+  const int row = static_cast<int>(i / static_cast<std::size_t>(columns));
+  return origin_ + (column + 0.5) / columns * u_ + (row + 0.5) / rows * v_;
+}
+
+Vec3 CalculationGrid::normal(std::size_t i) const {
+  return kind == GridKind::Points ? normals_[i] : planeNormal_;
+}
 
 double Source::emittingArea() const {
   double area = 0.0;
@@ -27,8 +77,17 @@ double Scene::size() const {
       std::for_each(face.vertices().begin(), face.vertices().end(), add);
     }
   }
-  for (const CalculationGrid& grid : grids)
-    std::for_each(grid.positions.begin(), grid.positions.end(), add);
+  for (const CalculationGrid& grid : grids) {
+    if (grid.kind == GridKind::Points) {
+      for (std::size_t i = 0; i < grid.size(); ++i) add(grid.position(i));
+      continue;
+    }
+    // A planar grid's points are an affine image of the cell indices and rounding is monotonic:
+    // the four corner points span the same box as all of them.
+    const std::size_t c = static_cast<std::size_t>(grid.columns),
+                      r = static_cast<std::size_t>(grid.rows);
+    for (std::size_t i : {std::size_t{0}, c - 1, (r - 1) * c, r * c - 1}) add(grid.position(i));
+  }
   return (high.array() >= low.array()).all() ? (high - low).norm() : 0.0;
 }
 

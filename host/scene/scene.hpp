@@ -38,13 +38,40 @@ struct Source {
 
 enum class GridKind { WorkPlane, Rect, Points };
 
-struct CalculationGrid {
+// The points where illuminance is wanted. A planar grid (work plane, rect) is described, not
+// stored: its points are the centres of the columns × rows cells of the parallelogram
+// origin + [0,1]·u + [0,1]·v, row-major (index = row · columns + column, rows along v), all with
+// the plane's normal; a 10^7-point grid costs no more memory than a 10-point one. A point list
+// keeps what was given (it is input-sized). Every user reads points through size(), position(i)
+// and normal(i), so that the layout is worked out in one place.
+class CalculationGrid {
+ public:
   std::string name;
   GridKind kind = GridKind::Points;
-  std::vector<Vec3> positions;  // m
-  std::vector<Vec3> normals;    // unit
-  double spacing = 0.0;         // m; 0 for point lists
-  int columns = 0, rows = 0;    // planar grids: positions are row-major, rows along v
+  double spacing = 0.0;       // m; 0 for point lists
+  int columns = 0, rows = 0;  // planar grids; 0 × 0 for point lists
+
+  CalculationGrid() = default;
+  static CalculationGrid planar(std::string name, GridKind kind, const Vec3& origin, const Vec3& u,
+                                const Vec3& v, int columns, int rows, double spacing);
+  // Positions in m, normals unit, one normal per position (std::invalid_argument otherwise).
+  static CalculationGrid pointList(std::string name, std::vector<Vec3> positions,
+                                   std::vector<Vec3> normals);
+
+  std::size_t size() const;
+  Vec3 position(std::size_t i) const;  // m; i < size()
+  Vec3 normal(std::size_t i) const;    // unit
+
+  // Planar grids: the parallelogram the cells cut (zero for point lists).
+  const Vec3& origin() const { return origin_; }
+  const Vec3& u() const { return u_; }
+  const Vec3& v() const { return v_; }
+
+ private:
+  Vec3 origin_ = Vec3::Zero(), u_ = Vec3::Zero(), v_ = Vec3::Zero();
+  Vec3 planeNormal_ = Vec3::UnitZ();
+  std::vector<Vec3> positions_;  // point lists only
+  std::vector<Vec3> normals_;
 };
 
 struct Opening {

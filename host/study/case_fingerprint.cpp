@@ -76,9 +76,9 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
       if (grid.name != name) continue;
       h.add(std::string_view(grid.name));
       h.add(grid.spacing);
-      for (std::size_t i = 0; i < grid.positions.size(); ++i) {
-        h.add(grid.positions[i]);
-        h.add(grid.normals[i]);
+      for (std::size_t i = 0; i < grid.size(); ++i) {
+        h.add(grid.position(i));
+        h.add(grid.normal(i));
       }
     }
   }

@@ -14,10 +14,12 @@ namespace {
 void expectUsable(const penumbra::Scene& scene) {
   using penumbra::fuzz::reject;
   for (const auto& grid : scene.grids) {
-    if (grid.positions.size() != grid.normals.size()) reject("grid sizes differ", grid.name);
-    for (std::size_t i = 0; i < grid.positions.size(); ++i) {
-      if (!grid.positions[i].allFinite()) reject("grid point not finite", grid.name);
-      if (!(std::abs(grid.normals[i].norm() - 1.0) <= 1e-9)) reject("normal not unit", grid.name);
+    // A planar grid's points are worked out from its frame: check every one (the loader caps a
+    // grid at 10^7 points, and the fuzzer's scenes are far smaller).
+    if (grid.size() == 0) reject("grid has no points", grid.name);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      if (!grid.position(i).allFinite()) reject("grid point not finite", grid.name);
+      if (!(std::abs(grid.normal(i).norm() - 1.0) <= 1e-9)) reject("normal not unit", grid.name);
     }
   }
   for (const auto& source : scene.sources) {
