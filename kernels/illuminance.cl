@@ -49,11 +49,51 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * B), streamed edge by edge. A convex face leaves the horizon once (exit) and re-enters once
  * (entry); the chord exit → entry lies in the horizon plane and closes the clipped contour. */
 
+typedef struct {
+  float8 sum;
+  float8 exx, exy, exz, enx, eny, enz; /* where the contour leaves / re-enters the horizon */
+  int8 has_exit, has_entry;
+} HorizonSum8;
+
+inline void horizon_begin8(HorizonSum8* h) {
+  h->sum = 0.0f;
+  h->exx = h->exy = h->exz = h->enx = h->eny = h->enz = 0.0f;
+  h->has_exit = h->has_entry = 0;
+}
+
+/* One edge a → b of the face (vectors from P), ha and hb their heights above the horizon. */
+inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float8 ha, float8 bx,
+                          float8 by, float8 bz, float8 hb, float8 nx, float8 ny, float8 nz) {
+  int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
+  float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
+  float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
+  float8 term =
+      edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
+                 select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
+  h->sum += select((float8)(0.0f), term, a_in | b_in);
+  int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
+  h->exx = select(h->exx, cx, leaves);
+  h->exy = select(h->exy, cy, leaves);
+  h->exz = select(h->exz, cz, leaves);
+  h->enx = select(h->enx, cx, enters);
+  h->eny = select(h->eny, cy, enters);
+  h->enz = select(h->enz, cz, enters);
+  h->has_exit |= leaves;
+  h->has_entry |= enters;
+}
+
+inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
+  int8 cut = h->has_exit & h->has_entry;
+  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
+    h->sum += select((float8)(0.0f),
+                     edge_term8(h->exx, h->exy, h->exz, h->enx, h->eny, h->enz, nx, ny, nz), cut);
+  return h->sum;
+}
+
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                                PnSourceFace face, __global const float4* vertices) {
-  float8 sum = 0.0f;
-  float8 exx = 0.0f, exy = 0.0f, exz = 0.0f, enx = 0.0f, eny = 0.0f, enz = 0.0f;
-  int8 has_exit = 0, has_entry = 0;
+  HorizonSum8 h;
+  horizon_begin8(&h);
   const int m = face.vertexCount;
   float4 q = vertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
@@ -62,33 +102,83 @@ inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float
     q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
     float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
     float8 hb = nx * bx + ny * by + nz * bz;
-    int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
-    float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
-    float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
-    float8 term =
-        edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
-                   select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
-    sum += select((float8)(0.0f), term, a_in | b_in);
-    int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
-    exx = select(exx, cx, leaves);
-    exy = select(exy, cy, leaves);
-    exz = select(exz, cz, leaves);
-    enx = select(enx, cx, enters);
-    eny = select(eny, cy, enters);
-    enz = select(enz, cz, enters);
-    has_exit |= leaves;
-    has_entry |= enters;
+    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
     ax = bx;
     ay = by;
     az = bz;
     ha = hb;
   }
-  int8 cut = has_exit & has_entry;
-  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
-    sum += select((float8)(0.0f), edge_term8(exx, exy, exz, enx, eny, enz, nx, ny, nz), cut);
+  float8 sum = horizon_end8(&h, nx, ny, nz);
   /* Only points strictly in front of the face see it. */
   float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
   return select((float8)(0.0f), sum, front > 0.0f);
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * Apertures (host/shadow/aperture.hpp). For the lanes that use the aperture: the visible part of
+ * the face, face ∩ cone(P, A), as a rectangle relative to P. A projects from P onto the face's
+ * plane by the homothety of ratio k = hS / hA about P (hS, hA: P's heights above the face's
+ * and A's planes), so the rectangle is the min/max of two rectangles. Empty (u1 <= u0 or
+ * v1 <= v0): the wall hides the whole face. */
+
+typedef struct {
+  int8 use;              /* lanes strictly in front of A and inside the room's box */
+  float8 u0, u1, v0, v1; /* the visible rectangle, coordinates relative to P's */
+  float8 depth;          /* the face's plane relative to P along the emission direction */
+} ApertureView8;
+
+inline ApertureView8 aperture_view8(float8 px, float8 py, float8 pz, PnSourceFace face,
+                                    PnAperture ap, float eps_length) {
+  ApertureView8 v;
+  float8 ha = ap.plane.x * px + ap.plane.y * py + ap.plane.z * pz - ap.plane.w;
+  float8 hs = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
+  v.use = (ha > eps_length) & (px >= ap.roomLo.x) & (px <= ap.roomHi.x) & (py >= ap.roomLo.y) &
+          (py <= ap.roomHi.y) & (pz >= ap.roomLo.z) & (pz <= ap.roomHi.z);
+  float8 pu = ap.axisU.x * px + ap.axisU.y * py + ap.axisU.z * pz;
+  float8 pv = ap.axisV.x * px + ap.axisV.y * py + ap.axisV.z * pz;
+  /* A's side at offset d from P lands at k·d = d + d·(t / hA) on the face's plane (t = hS − hA,
+   * the wall's thickness): the large part d keeps the one rounding of a vertex difference, as
+   * the face's own sides do; k·d rounds relative to d, 1e-6 of the window at 10 m. */
+  float8 g = ap.thickness.x / ha;
+  float8 du0 = ap.openingRect.x - pu, du1 = ap.openingRect.y - pu;
+  float8 dv0 = ap.openingRect.z - pv, dv1 = ap.openingRect.w - pv;
+  v.u0 = fmax(ap.sourceRect.x - pu, du0 + du0 * g);
+  v.u1 = fmin(ap.sourceRect.y - pu, du1 + du1 * g);
+  v.v0 = fmax(ap.sourceRect.z - pv, dv0 + dv0 * g);
+  v.v1 = fmin(ap.sourceRect.w - pv, dv1 + dv1 * g);
+  v.depth = -hs;
+  return v;
+}
+
+/* Corner i (0..3, counter-clockwise about the emission direction) of the visible rectangle,
+ * relative to P. */
+inline void aperture_corner8(ApertureView8 v, PnAperture ap, float4 n, int i, float8* x, float8* y,
+                             float8* z) {
+  float8 u = (i == 0 || i == 3) ? v.u0 : v.u1;
+  float8 w = (i < 2) ? v.v0 : v.v1;
+  *x = u * ap.axisU.x + w * ap.axisV.x + v.depth * n.x;
+  *y = u * ap.axisU.y + w * ap.axisV.y + v.depth * n.y;
+  *z = u * ap.axisU.z + w * ap.axisV.z + v.depth * n.z;
+}
+
+inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane, float8 nx,
+                                   float8 ny, float8 nz) {
+  HorizonSum8 h;
+  horizon_begin8(&h);
+  float8 ax, ay, az;
+  aperture_corner8(v, ap, plane, 0, &ax, &ay, &az);
+  float8 ha = nx * ax + ny * ay + nz * az;
+  for (int i = 0; i < 4; ++i) {
+    float8 bx, by, bz;
+    aperture_corner8(v, ap, plane, (i + 1) & 3, &bx, &by, &bz);
+    float8 hb = nx * bx + ny * by + nz * bz;
+    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
+    ax = bx;
+    ay = by;
+    az = bz;
+    ha = hb;
+  }
+  return horizon_end8(&h, nx, ny, nz);
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -384,26 +474,36 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
   return sum;
 }
 
+/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
+ * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
 float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf,
                     __global const int* candidates, int use_volumes,
                     __global const float4* vertices, __global const PnOccluder* occluders,
                     __global const float4* planes, __global const int4* edges,
-                    __global const float4* overts, float eps_length, int* error) {
+                    __global const float4* overts, float eps_length, bool aperture,
+                    const float3* corners, int* error) {
   if (dot(face.plane.xyz, p) - face.plane.w <= 0.0f) return 0.0f;
   PenumbraState st;
 
-  /* S': the face clipped by the horizon plane through P (Sutherland–Hodgman). */
+  /* S': the face (or its visible rectangle) clipped by the horizon plane through P
+   * (Sutherland–Hodgman). */
   st.ns = 0;
-  const int m = face.vertexCount;
-  float3 a = vertices[face.firstVertex].xyz - p;
-  float ha = dot(n, a);
-  for (int i = 0; i < m; ++i) {
-    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
-    float hb = dot(n, b);
-    if (ha >= 0.0f) st.sv[st.ns++] = a;
-    if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
-    a = b;
-    ha = hb;
+  if (aperture) {
+    for (int i = 0; i < 4; ++i) st.sv[i] = corners[i];
+    st.ns = 4;
+    clip_source(&st, n);
+  } else {
+    const int m = face.vertexCount;
+    float3 a = vertices[face.firstVertex].xyz - p;
+    float ha = dot(n, a);
+    for (int i = 0; i < m; ++i) {
+      float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+      float hb = dot(n, b);
+      if (ha >= 0.0f) st.sv[st.ns++] = a;
+      if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
+      a = b;
+      ha = hb;
+    }
   }
   if (st.ns < 3) return 0.0f;
   /* A face seen edge-on (every vertex of S' within the tolerance of the horizon, e.g. a source
@@ -424,6 +524,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int i = 0; i < count; ++i) {
     const int k = occluder_index(i, pf, face, candidates);
     PnOccluder o = occluders[k];
+    if (aperture && o.behindAperture) continue;
     if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
     if (use_volumes && !in_penumbra_volume(p, o, planes, eps_length)) continue;
     bool any_front = false;
@@ -486,8 +587,8 @@ typedef struct {
 
 ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
                           PnPatchFace pf, __global const int* candidates, int use_volumes,
-                          __global const PnOccluder* occluders, __global const float4* planes,
-                          float eps_length) {
+                          int8 aperture, __global const PnOccluder* occluders,
+                          __global const float4* planes, float eps_length) {
   ShadowTests t;
   t.umbra = 0;
   t.shaded = 0;
@@ -495,6 +596,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
   for (int i = 0; i < count; ++i) {
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
     int8 inside = own != (int8)(o.solid);
+    if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (use_volumes) {
       for (int j = 0; j < o.penumbraCount && any(inside); ++j) {
         float4 pl = planes[o.firstPenumbra + j];
@@ -535,9 +637,9 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
                           __global const PnOccluder* occluders, __global const float4* planes,
                           __global const int4* edges, __global const float4* overts,
                           const float eps_length, __global const PnPatchFace* patch_faces,
-                          __global const int* candidates, const int use_volumes,
-                          const int per_source, __global float* out, __global int* errors,
-                          __global uchar* classes, const int class_stride) {
+                          __global const int* candidates, __global const PnAperture* apertures,
+                          const int use_volumes, const int per_source, __global float* out,
+                          __global int* errors, __global uchar* classes, const int class_stride) {
   const size_t g = get_global_id(0);
   float8 px = vload8(g, px_), py = vload8(g, py_), pz = vload8(g, pz_);
   float8 nx = vload8(g, nx_), ny = vload8(g, ny_), nz = vload8(g, nz_);
@@ -561,22 +663,56 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
     PnSourceFace face = faces[f];
     PnPatchFace pf = patch_faces[g * face_count + f];
     if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
-      float8 e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      /* Lanes that see the face through its aperture (culling only): its visible rectangle;
+       * `dark` lanes see none of it past the wall. */
+      ApertureView8 view;
+      PnAperture ap;
+      view.use = 0;
+      view.u0 = view.u1 = view.v0 = view.v1 = view.depth = 0.0f;
+      if (use_volumes && face.aperture >= 0) {
+        ap = apertures[face.aperture];
+        view = aperture_view8(px, py, pz, face, ap, eps_length);
+      }
+      int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
+      float8 e_face = 0.0f;
+      if (!all(view.use)) e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      if (any(view.use & ~dark))
+        e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
+      e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
-      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, occluders,
-                                    planes, eps_length);
+      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view.use,
+                                    occluders, planes, eps_length);
+      t.shaded &= ~dark;
+      t.umbra |= dark;
+      facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
       if (any(t.shaded)) {
         float lane_e[PN_LANES];
         int lane_shaded[PN_LANES];
         vstore8(e_face, 0, lane_e);
         vstore8(t.shaded, 0, lane_shaded);
+        int lane_ap[PN_LANES];
+        float lane_cx[4][PN_LANES], lane_cy[4][PN_LANES], lane_cz[4][PN_LANES];
+        vstore8(view.use, 0, lane_ap);
+        if (any(view.use & t.shaded))
+          for (int i = 0; i < 4; ++i) {
+            float8 cx, cy, cz;
+            aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
+            vstore8(cx, 0, lane_cx[i]);
+            vstore8(cy, 0, lane_cy[i]);
+            vstore8(cz, 0, lane_cz[i]);
+          }
         for (int l = 0; l < PN_LANES; ++l) {
           if (!lane_shaded[l]) continue;
           float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
           float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
+          float3 corners[4];
+          if (lane_ap[l])
+            for (int i = 0; i < 4; ++i)
+              corners[i] = (float3)(lane_cx[i][l], lane_cy[i][l], lane_cz[i][l]);
           lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes, vertices,
-                                    occluders, planes, edges, overts, eps_length, &error);
+                                    occluders, planes, edges, overts, eps_length, lane_ap[l] != 0,
+                                    corners, &error);
         }
         e_face = vload8(0, lane_e);
       }

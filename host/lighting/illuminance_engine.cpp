@@ -19,7 +19,7 @@ struct IlluminanceEngine::State {
   SceneShadows shadows;
   KernelScene packed;
   compute::Program program;
-  DeviceBuffer faces, sourceVertices, occluders, planes, edges, occluderVertices;
+  DeviceBuffer faces, apertures, sourceVertices, occluders, planes, edges, occluderVertices;
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d),
@@ -33,7 +33,10 @@ struct IlluminanceEngine::State {
     compute::Device& d = *device;
     shadows = buildSceneShadows(scene);
     packed = packScene(scene, shadows);
+    if (!options.apertures)
+      for (PnSourceFace& f : packed.faces) f.aperture = -1;
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
+    apertures = DeviceBuffer::upload<PnAperture>(d, packed.apertures);
     sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
@@ -128,6 +131,7 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   launch.arg(a++, state_->packed.epsLength);
   launch.arg(a++, patchBuffer);
   launch.arg(a++, candidateBuffer);
+  launch.arg(a++, state_->apertures);
   launch.arg(a++, state_->options.culling ? 1 : 0);
   launch.arg(a++, bySource ? 1 : 0);
   launch.arg(a++, out);
