@@ -181,13 +181,38 @@ inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane,
   return horizon_end8(&h, nx, ny, nz);
 }
 
+/* Lanes for which the occluder cannot meet conv(P, visible rectangle): all its vertices lie
+ * outside one side plane of that pyramid, by more than eps_length across at their depth. A
+ * point x (from P) at depth h towards the face is inside iff u0·h <= x·axisU·hS <= u1·h (and
+ * the same in v), hS the face's depth. */
+inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8 v, PnAperture ap,
+                                  float4 n, PnOccluder o, __global const float4* overts,
+                                  float eps_length) {
+  float8 hs = -v.depth, margin = eps_length * hs;
+  int8 u0 = -1, u1 = -1, v0 = -1, v1 = -1;
+  for (int k = 0; k < o.vertexCount; ++k) {
+    float4 q = overts[o.firstVertex + k];
+    float8 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
+    float8 xu = (ap.axisU.x * dx + ap.axisU.y * dy + ap.axisU.z * dz) * hs;
+    float8 xv = (ap.axisV.x * dx + ap.axisV.y * dy + ap.axisV.z * dz) * hs;
+    float8 h = -(n.x * dx + n.y * dy + n.z * dz);
+    u0 &= xu < v.u0 * h - margin;
+    u1 &= xu > v.u1 * h + margin;
+    v0 &= xv < v.v0 * h - margin;
+    v1 &= xv > v.v1 * h + margin;
+    if (!any(u0 | u1 | v0 | v1)) break;
+  }
+  return u0 | u1 | v0 | v1;
+}
+
 /* ---------------------------------------------------------------------------------------------
  * Occluder culling shared by both paths. An occluder cannot shade P from the face when
  *  - P lies on it (the solid P belongs to), or
  *  - one of its separating planes (faces whose closed outside holds the whole source face) has
  *    P in its closed outside too: every segment P→source then stays in that half-space, or
- *  - its bounding sphere misses the pyramid P + cone(face) (outside one side plane or wholly
- *    below the horizon). */
+ *  - it misses the pyramid P + cone(S'), S' the visible part of the face before occlusion:
+ *    its bounding sphere outside one side plane or wholly below the horizon, or (through an
+ *    aperture) all its vertices outside one side plane (outside_source_pyramid). */
 
 inline bool occluder_separated(float3 p, PnOccluder o, __global const float4* planes,
                                float eps_length) {
@@ -218,23 +243,6 @@ inline int occluder_count(PnPatchFace pf, PnSourceFace face) {
 inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face,
                           __global const int* candidates) {
   return pf.candidateCount < 0 ? face.firstOccluder + i : candidates[pf.firstCandidate + i];
-}
-
-inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
-                                   __global const float4* vertices) {
-  float3 c = o.bound.xyz - p;
-  float r = o.bound.w;
-  if (dot(n, c) < -r) return true;
-  const int m = face.vertexCount;
-  float3 a = vertices[face.firstVertex].xyz - p;
-  for (int i = 0; i < m; ++i) {
-    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
-    /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
-    float3 side = cross(a, b);
-    if (dot(side, c) > r * length(side)) return true;
-    a = b;
-  }
-  return false;
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -314,6 +322,28 @@ bool clip_by_contact(PenumbraState* st, float3 p, float3 n, PnOccluder o,
   if (limiting < 0) return false;
   clip_source(st, planes[o.firstPlane + limiting].xyz);
   return st->ns >= 3;
+}
+
+/* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->sm): its bounding
+ * sphere is below the horizon or outside a side plane; or, for a lane that sees the face through
+ * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
+ * outside a side plane by more than eps_length. */
+bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                            bool vertices, __global const float4* overts, float eps_length) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  for (int i = 0; i < st->ns; ++i)
+    if (dot(st->sm[i], c) > r) return true; /* (a zero normal never passes) */
+  if (!vertices) return false;
+  for (int i = 0; i < st->ns; ++i) {
+    float3 m = st->sm[i]; /* a zero normal (no plane) never has the vertices outside */
+    bool out = true;
+    for (int k = 0; k < o.vertexCount && out; ++k)
+      out = dot(m, overts[o.firstVertex + k].xyz - p) > eps_length;
+    if (out) return true;
+  }
+  return false;
 }
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
@@ -514,9 +544,12 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int i = 0; i < st.ns; ++i) rise = fmax(rise, dot(n, st.sv[i]) / length(st.sv[i]));
   if (rise <= PN_EPS_REL) return 0.0f;
 
+  for (int i = 0; i < st.ns; ++i)
+    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+
   /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
-   * P is outside their penumbra volume or their bounding sphere misses the pyramid to the
-   * face); those with none are solids P lies on. */
+   * P is outside their penumbra volume or they miss the pyramid to S'); those with none are
+   * solids P lies on. */
   st.na = 0;
   st.first_contour[0] = 0;
   int contacts = 0;
@@ -537,9 +570,11 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
       }
       ++contacts;
       if (!clip_by_contact(&st, p, n, o, planes, eps_length)) return 0.0f;
+      for (int i = 0; i < st.ns; ++i)
+        st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
       continue;
     }
-    if (sphere_outside_pyramid(p, n, o, face, vertices)) continue;
+    if (outside_source_pyramid(&st, p, n, o, aperture, overts, eps_length)) continue;
     if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
@@ -561,8 +596,6 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     st.first_contour[st.na] = c;
   }
 
-  for (int i = 0; i < st.ns; ++i)
-    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
   float sum = 0.0f;
   for (int i = 0; i < st.ns; ++i)
     sum += visible_edge_term(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1], -1, n, &st, error);
@@ -572,6 +605,291 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   /* A visible region gives no negative light: a sum below 0 is the float round-off of an empty
    * one (an umbra's edge: -5e-6 lx where π·L = 3142 lx, bench/degenerate_stress). */
   return fmax(sum, 0.0f);
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * The penumbra path in eight lanes (culling only; the plain path keeps the scalar one above).
+ * The same method and tie rule as penumbra_face, with every lane's view in one float8:
+ *  - the active occluders are the union over the lanes (each with a lane mask), in candidate
+ *    order, so "lower index" means the same in every lane;
+ *  - every edge of an active occluder is kept with a per-lane contour mask and orientation;
+ *  - S' is the face (or the lane's aperture rectangle) with each edge's part above the horizon
+ *    and, where the horizon cuts it, the chord: its side planes are the face's edge planes and,
+ *    in cut lanes, the horizon plane;
+ *  - the visible parts of an edge are [lo, hi] minus the union of the intervals the other
+ *    regions cover: a visible piece starts at lo or at the end of a covering interval that no
+ *    other interval covers, and ends at the next interval's start or hi; each piece is one
+ *    float8 edge term for the lanes that have it.
+ * Lanes this path does not take (a solid touching P, more occluders or edges than it holds, an
+ * occluder with more faces than it tracks) are returned in `rest` for the scalar path. */
+
+#define PN_VEC_OCCLUDERS 8 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 96    /* their edges in all */
+#define PN_VEC_FACES 16    /* faces of one occluder */
+#define PN_VEC_SOURCE 8    /* vertices of the face */
+
+typedef struct {
+  float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
+  float8 mx, my, mz;             /* unit side-plane normal along cross(a, b); 0: none */
+  int8 on;                       /* lanes where it is a contour edge of the occluder */
+} ContourEdge8;
+
+typedef struct {
+  ContourEdge8 e[PN_VEC_EDGES];
+  int8 act[PN_VEC_OCCLUDERS]; /* the lanes each occluder is active in */
+  int first[PN_VEC_OCCLUDERS + 1];
+  int na;
+} Contours8;
+
+inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                         float8* mx, float8* my, float8* mz) {
+  float8 cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+  float8 len = sqrt(cx * cx + cy * cy + cz * cz);
+  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  int8 none = len <= PN_EPS_REL * la * lb;
+  *mx = select(cx / len, (float8)(0.0f), none);
+  *my = select(cy / len, (float8)(0.0f), none);
+  *mz = select(cz / len, (float8)(0.0f), none);
+}
+
+inline float8 edge_point8(float8 a, float8 b, float8 t) {
+  return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
+}
+
+/* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
+ * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
+float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                          float8 lo, float8 hi, int8 on, int owner, float8 nx, float8 ny, float8 nz,
+                          const Contours8* cs) {
+  if (!any(on)) return 0.0f;
+  float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
+  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
+  int8 cov[PN_VEC_OCCLUDERS];
+  for (int v = 0; v < cs->na; ++v) {
+    float8 t0 = 0.0f, t1 = 1.0f;
+    int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
+    for (int k = cs->first[v]; k < cs->first[v + 1] && any(covers); ++k) {
+      const ContourEdge8* e = &cs->e[k];
+      int8 use = covers & e->on & ((e->mx != 0.0f) | (e->my != 0.0f) | (e->mz != 0.0f));
+      if (!any(use)) continue;
+      float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
+      float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
+      int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
+      if (owner < v) /* same visible side: this edge is the one kept */
+        covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
+      int8 clip = use & ~inplane;
+      int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
+      covers &= ~(clip & n0 & n1);
+      float8 t = f0 / (f0 - f1);
+      t0 = select(t0, fmax(t0, t), clip & n0 & ~n1);
+      t1 = select(t1, fmin(t1, t), clip & ~n0 & n1);
+      covers &= t1 > t0;
+    }
+    c0[v] = t0;
+    c1[v] = t1;
+    cov[v] = covers;
+  }
+  /* Visible pieces: candidate starts lo and each covering interval's end. */
+  float8 starts[PN_VEC_OCCLUDERS + 1];
+  int8 kept[PN_VEC_OCCLUDERS + 1];
+  float8 sum = 0.0f;
+  for (int j = -1; j < cs->na; ++j) {
+    float8 st = j < 0 ? lo : c1[j];
+    int8 valid = j < 0 ? on : cov[j];
+    valid &= (st >= lo) & (st < hi);
+    float8 end = hi;
+    for (int w = 0; w < cs->na && any(valid); ++w) {
+      valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
+      end = select(end, fmin(end, c0[w]), cov[w] & (c0[w] > st));
+    }
+    for (int i = 0; i <= j && any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
+    starts[j + 1] = st;
+    kept[j + 1] = valid;
+    valid &= end > st;
+    if (!any(valid)) continue;
+    float8 term = edge_term8(edge_point8(ax, bx, st), edge_point8(ay, by, st),
+                             edge_point8(az, bz, st), edge_point8(ax, bx, end),
+                             edge_point8(ay, by, end), edge_point8(az, bz, end), nx, ny, nz);
+    sum += select((float8)(0.0f), term, valid);
+  }
+  return sum;
+}
+
+/* E of the face at the lanes in `todo` (others 0), and in *rest the lanes left to the scalar
+ * path. */
+float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
+                      int8 todo, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
+                      ApertureView8 view, PnAperture ap, __global const float4* vertices,
+                      __global const PnOccluder* occluders, __global const float4* planes,
+                      __global const int4* edges, __global const float4* overts, float eps_length,
+                      int8* rest) {
+  *rest = 0;
+  const int m = face.vertexCount;
+  if (m > PN_VEC_SOURCE) {
+    *rest = todo;
+    return 0.0f;
+  }
+  /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
+  float8 sx[PN_VEC_SOURCE], sy[PN_VEC_SOURCE], sz[PN_VEC_SOURCE], sh[PN_VEC_SOURCE];
+  for (int i = 0; i < m; ++i) {
+    float4 q = vertices[face.firstVertex + i];
+    sx[i] = q.x - px;
+    sy[i] = q.y - py;
+    sz[i] = q.z - pz;
+    if (any(view.use)) {
+      float8 cx, cy, cz;
+      aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
+      sx[i] = select(sx[i], cx, view.use);
+      sy[i] = select(sy[i], cy, view.use);
+      sz[i] = select(sz[i], cz, view.use);
+    }
+    sh[i] = nx * sx[i] + ny * sy[i] + nz * sz[i];
+  }
+  /* Lanes behind the face, or that see it edge-on (penumbra_face), get 0. */
+  float8 rise = 0.0f;
+  for (int i = 0; i < m; ++i)
+    rise = fmax(rise, sh[i] / sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]));
+  int8 lanes = todo &
+               (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
+               (rise > PN_EPS_REL);
+  if (!any(lanes)) return 0.0f;
+  /* Side planes of S': the face's edges, and the horizon where it cuts the face. */
+  float8 smx[PN_VEC_SOURCE], smy[PN_VEC_SOURCE], smz[PN_VEC_SOURCE];
+  float8 hx0 = 0.0f, hy0 = 0.0f, hz0 = 0.0f, hx1 = 0.0f, hy1 = 0.0f, hz1 = 0.0f; /* the chord */
+  int8 has_exit = 0, has_entry = 0;
+  for (int i = 0; i < m; ++i) {
+    int j = i + 1 == m ? 0 : i + 1;
+    side_normal8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], &smx[i], &smy[i], &smz[i]);
+    int8 a_in = sh[i] >= 0.0f, b_in = sh[j] >= 0.0f;
+    float8 t = sh[i] / (sh[i] - sh[j]);
+    float8 cx = edge_point8(sx[i], sx[j], t), cy = edge_point8(sy[i], sy[j], t),
+           cz = edge_point8(sz[i], sz[j], t);
+    int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
+    hx0 = select(hx0, cx, leaves);
+    hy0 = select(hy0, cy, leaves);
+    hz0 = select(hz0, cz, leaves);
+    hx1 = select(hx1, cx, enters);
+    hy1 = select(hy1, cy, enters);
+    hz1 = select(hz1, cz, enters);
+    has_exit |= leaves;
+    has_entry |= enters;
+  }
+  int8 cut = has_exit & has_entry;
+  float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
+  if (any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+
+  /* The active occluders and their edges. */
+  Contours8 cs;
+  cs.na = 0;
+  cs.first[0] = 0;
+  const int count = occluder_count(pf, face);
+  for (int i = 0; i < count; ++i) {
+    PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
+    int8 act = lanes & (own != (int8)(o.solid));
+    if (o.behindAperture) act &= ~view.use;
+    for (int j = 0; j < o.separatingCount && any(act); ++j) {
+      float4 pl = planes[o.firstSeparating + j];
+      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
+    }
+    for (int j = 0; j < o.penumbraCount && any(act); ++j) {
+      float4 pl = planes[o.firstPenumbra + j];
+      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
+    }
+    if (!any(act)) continue;
+    /* The bounding sphere against the pyramid P + cone(S'). */
+    float8 cx = o.bound.x - px, cy = o.bound.y - py, cz = o.bound.z - pz;
+    act &= (nx * cx + ny * cy + nz * cz) >= -o.bound.w;
+    for (int j = 0; j < m && any(act); ++j)
+      act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
+    if (any(act & view.use))
+      act &= ~(view.use &
+               misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+    if (!any(act)) continue;
+    if (o.planeCount > PN_VEC_FACES || cs.na == PN_VEC_OCCLUDERS ||
+        cs.first[cs.na] + o.edgeCount > PN_VEC_EDGES) {
+      *rest |= act;
+      continue;
+    }
+    int8 front[PN_VEC_FACES];
+    int8 any_front = 0;
+    for (int j = 0; j < o.planeCount; ++j) {
+      float4 pl = planes[o.firstPlane + j];
+      front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
+      any_front |= front[j];
+    }
+    *rest |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
+    act &= any_front;
+    if (!any(act)) continue;
+    int c = cs.first[cs.na];
+    for (int k = 0; k < o.edgeCount; ++k) {
+      int4 ed = edges[o.firstEdge + k];
+      int8 lf = front[ed.z], rf = front[ed.w];
+      int8 on = act & (lf ^ rf);
+      if (!any(on)) continue;
+      float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
+      float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
+      float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
+      ContourEdge8* e = &cs.e[c++];
+      /* run as the face that does not see P does (contour_edge) */
+      e->ax = select(fx, gx, lf);
+      e->ay = select(fy, gy, lf);
+      e->az = select(fz, gz, lf);
+      e->bx = select(gx, fx, lf);
+      e->by = select(gy, fy, lf);
+      e->bz = select(gz, fz, lf);
+      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &e->mx, &e->my, &e->mz);
+      e->on = on;
+    }
+    cs.act[cs.na] = act;
+    ++cs.na;
+    cs.first[cs.na] = c;
+  }
+  lanes &= ~*rest;
+
+  float8 sum = 0.0f;
+  /* (a) The source's edges above the horizon, and the chord. */
+  for (int i = 0; i < m; ++i) {
+    int j = i + 1 == m ? 0 : i + 1;
+    int8 a_in = sh[i] >= 0.0f, b_in = sh[j] >= 0.0f;
+    float8 t = sh[i] / (sh[i] - sh[j]);
+    float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
+    sum += visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], lo, hi,
+                              lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
+  }
+  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, (float8)(0.0f), (float8)(1.0f),
+                            lanes & cut, -1, nx, ny, nz, &cs);
+  /* (b) The occluders' contour edges inside S', as holes. */
+  for (int u = 0; u < cs.na; ++u)
+    for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
+      const ContourEdge8* e = &cs.e[k];
+      int8 on = lanes & e->on;
+      if (!any(on)) continue;
+      float8 la = sqrt(e->ax * e->ax + e->ay * e->ay + e->az * e->az);
+      float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
+      float8 t0 = 0.0f, t1 = 1.0f;
+      for (int i = 0; i <= m && any(on); ++i) {
+        float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
+        int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
+        if (i == m) use &= cut;
+        if (!any(use)) continue;
+        float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
+        float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
+        /* In a side plane of S': the source keeps it, or the visible region is empty there. */
+        int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
+        on &= ~inplane;
+        int8 clip = use & ~inplane;
+        int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
+        on &= ~(clip & n0 & n1);
+        float8 t = f0 / (f0 - f1);
+        t0 = select(t0, fmax(t0, t), clip & n0 & ~n1);
+        t1 = select(t1, fmin(t1, t), clip & ~n0 & n1);
+        on &= t1 > t0;
+      }
+      sum += visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, t0, t1, on, u, nx, ny, nz,
+                                &cs);
+    }
+  return select((float8)(0.0f), fmax(sum, 0.0f), lanes);
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -587,8 +905,10 @@ typedef struct {
 
 ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
                           PnPatchFace pf, __global const int* candidates, int use_volumes,
-                          int8 aperture, __global const PnOccluder* occluders,
-                          __global const float4* planes, float eps_length) {
+                          ApertureView8 view, PnAperture ap, __global const PnOccluder* occluders,
+                          __global const float4* planes, __global const float4* overts,
+                          float eps_length) {
+  const int8 aperture = view.use;
   ShadowTests t;
   t.umbra = 0;
   t.shaded = 0;
@@ -603,6 +923,13 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
       if (!any(inside)) continue;
+      /* The volume is the occluder's against the whole face; lanes that see only a rectangle of
+       * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
+      if (any(inside & aperture)) {
+        inside &= ~(aperture &
+                    misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+        if (!any(inside)) continue;
+      }
       t.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
@@ -680,21 +1007,28 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
-      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view.use,
-                                    occluders, planes, eps_length);
+      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view, ap,
+                                    occluders, planes, overts, eps_length);
       t.shaded &= ~dark;
       t.umbra |= dark;
       facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
-      if (any(t.shaded)) {
+      int8 scalar_lanes = t.shaded;
+      if ((use_volumes & 2) && any(t.shaded)) {
+        float8 e_pen =
+            penumbra_face8(px, py, pz, nx, ny, nz, own, t.shaded, face, pf, candidates, view, ap,
+                           vertices, occluders, planes, edges, overts, eps_length, &scalar_lanes);
+        e_face = select(e_face, e_pen, t.shaded & ~scalar_lanes);
+      }
+      if (any(scalar_lanes)) {
         float lane_e[PN_LANES];
         int lane_shaded[PN_LANES];
         vstore8(e_face, 0, lane_e);
-        vstore8(t.shaded, 0, lane_shaded);
+        vstore8(scalar_lanes, 0, lane_shaded);
         int lane_ap[PN_LANES];
         float lane_cx[4][PN_LANES], lane_cy[4][PN_LANES], lane_cz[4][PN_LANES];
         vstore8(view.use, 0, lane_ap);
-        if (any(view.use & t.shaded))
+        if (any(view.use & scalar_lanes))
           for (int i = 0; i < 4; ++i) {
             float8 cx, cy, cz;
             aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);

@@ -132,7 +132,8 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   launch.arg(a++, patchBuffer);
   launch.arg(a++, candidateBuffer);
   launch.arg(a++, state_->apertures);
-  launch.arg(a++, state_->options.culling ? 1 : 0);
+  // use_volumes: bit 0 culling, bit 1 the eight-lane penumbra path.
+  launch.arg(a++, state_->options.culling ? (state_->options.vectorPenumbra ? 3 : 1) : 0);
   launch.arg(a++, bySource ? 1 : 0);
   launch.arg(a++, out);
   launch.arg(a++, errors);

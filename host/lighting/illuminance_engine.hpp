@@ -21,6 +21,9 @@ struct EngineOptions {
   // (shadow/aperture.hpp), and the wall around it is skipped. Off: the reveals are occluders like
   // any other (what the culled path did before apertures; tests compare it with the plain path).
   bool apertures = true;
+  // With culling only: points in a penumbra take the eight-lane penumbra path
+  // (kernels/illuminance.cl, penumbra_face8). Off: the scalar path, the plain path's code.
+  bool vectorPenumbra = true;
 };
 
 struct IlluminanceResult {
