@@ -652,6 +652,16 @@ inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
   *mz = select(cz / len, (float8)(0.0f), none);
 }
 
+/* clip_interval in eight lanes: clips [t0, t1] to {t : f0 + t (f1 - f0) >= 0} in the lanes of
+ * `clip`; returns the lanes where the interval is not empty. */
+inline int8 clip_interval8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1) {
+  int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
+  float8 t = f0 / (f0 - f1);
+  *t0 = select(*t0, fmax(*t0, t), clip & n0 & ~n1);
+  *t1 = select(*t1, fmin(*t1, t), clip & ~n0 & n1);
+  return ~(clip & n0 & n1) & (*t1 > *t0);
+}
+
 inline float8 edge_point8(float8 a, float8 b, float8 t) {
   return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
 }
@@ -678,13 +688,7 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
       int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
       if (owner < v) /* same visible side: this edge is the one kept */
         covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
-      int8 clip = use & ~inplane;
-      int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
-      covers &= ~(clip & n0 & n1);
-      float8 t = f0 / (f0 - f1);
-      t0 = select(t0, fmax(t0, t), clip & n0 & ~n1);
-      t1 = select(t1, fmin(t1, t), clip & ~n0 & n1);
-      covers &= t1 > t0;
+      covers &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
     }
     c0[v] = t0;
     c1[v] = t1;
@@ -878,13 +882,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
         int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
         on &= ~inplane;
-        int8 clip = use & ~inplane;
-        int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
-        on &= ~(clip & n0 & n1);
-        float8 t = f0 / (f0 - f1);
-        t0 = select(t0, fmax(t0, t), clip & n0 & ~n1);
-        t1 = select(t1, fmin(t1, t), clip & ~n0 & n1);
-        on &= t1 > t0;
+        on &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
       }
       sum += visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, t0, t1, on, u, nx, ny, nz,
                                 &cs);
@@ -954,7 +952,10 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
  * The kernel: E (lx) at PN_LANES points per work-item, summed over every source face, and each
  * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
  * an occluder may block), written source by source with row length class_stride.
- * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. */
+ * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES.
+ * use_volumes: 0 the plain path (every occluder, separating planes, scalar penumbra path); bit 0
+ * culling (face classes, candidates, volumes, apertures); bit 1 with it, the eight-lane penumbra
+ * path. */
 
 __kernel void illuminance(__global const float* px_, __global const float* py_,
                           __global const float* pz_, __global const float* nx_,
