@@ -324,6 +324,25 @@ bool clip_by_contact(PenumbraState* st, float3 p, float3 n, PnOccluder o,
   return st->ns >= 3;
 }
 
+/* The plain path's test (kept as the foundation had it): the bounding sphere against the pyramid
+ * P + cone(face). */
+inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
+                                   __global const float4* vertices) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  const int m = face.vertexCount;
+  float3 a = vertices[face.firstVertex].xyz - p;
+  for (int i = 0; i < m; ++i) {
+    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+    /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
+    float3 side = cross(a, b);
+    if (dot(side, c) > r * length(side)) return true;
+    a = b;
+  }
+  return false;
+}
+
 /* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->sm): its bounding
  * sphere is below the horizon or outside a side plane; or, for a lane that sees the face through
  * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
@@ -574,7 +593,9 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
         st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
       continue;
     }
-    if (outside_source_pyramid(&st, p, n, o, aperture, overts, eps_length)) continue;
+    if (use_volumes ? outside_source_pyramid(&st, p, n, o, aperture, overts, eps_length)
+                    : sphere_outside_pyramid(p, n, o, face, vertices))
+      continue;
     if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
