@@ -49,11 +49,51 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * B), streamed edge by edge. A convex face leaves the horizon once (exit) and re-enters once
  * (entry); the chord exit → entry lies in the horizon plane and closes the clipped contour. */
 
+typedef struct {
+  float8 sum;
+  float8 exx, exy, exz, enx, eny, enz; /* where the contour leaves / re-enters the horizon */
+  int8 has_exit, has_entry;
+} HorizonSum8;
+
+inline void horizon_begin8(HorizonSum8* h) {
+  h->sum = 0.0f;
+  h->exx = h->exy = h->exz = h->enx = h->eny = h->enz = 0.0f;
+  h->has_exit = h->has_entry = 0;
+}
+
+/* One edge a → b of the face (vectors from P), ha and hb their heights above the horizon. */
+inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float8 ha, float8 bx,
+                          float8 by, float8 bz, float8 hb, float8 nx, float8 ny, float8 nz) {
+  int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
+  float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
+  float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
+  float8 term =
+      edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
+                 select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
+  h->sum += select((float8)(0.0f), term, a_in | b_in);
+  int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
+  h->exx = select(h->exx, cx, leaves);
+  h->exy = select(h->exy, cy, leaves);
+  h->exz = select(h->exz, cz, leaves);
+  h->enx = select(h->enx, cx, enters);
+  h->eny = select(h->eny, cy, enters);
+  h->enz = select(h->enz, cz, enters);
+  h->has_exit |= leaves;
+  h->has_entry |= enters;
+}
+
+inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
+  int8 cut = h->has_exit & h->has_entry;
+  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
+    h->sum += select((float8)(0.0f),
+                     edge_term8(h->exx, h->exy, h->exz, h->enx, h->eny, h->enz, nx, ny, nz), cut);
+  return h->sum;
+}
+
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                                PnSourceFace face, __global const float4* vertices) {
-  float8 sum = 0.0f;
-  float8 exx = 0.0f, exy = 0.0f, exz = 0.0f, enx = 0.0f, eny = 0.0f, enz = 0.0f;
-  int8 has_exit = 0, has_entry = 0;
+  HorizonSum8 h;
+  horizon_begin8(&h);
   const int m = face.vertexCount;
   float4 q = vertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
@@ -62,33 +102,107 @@ inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float
     q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
     float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
     float8 hb = nx * bx + ny * by + nz * bz;
-    int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
-    float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
-    float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
-    float8 term =
-        edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
-                   select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
-    sum += select((float8)(0.0f), term, a_in | b_in);
-    int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
-    exx = select(exx, cx, leaves);
-    exy = select(exy, cy, leaves);
-    exz = select(exz, cz, leaves);
-    enx = select(enx, cx, enters);
-    eny = select(eny, cy, enters);
-    enz = select(enz, cz, enters);
-    has_exit |= leaves;
-    has_entry |= enters;
+    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
     ax = bx;
     ay = by;
     az = bz;
     ha = hb;
   }
-  int8 cut = has_exit & has_entry;
-  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
-    sum += select((float8)(0.0f), edge_term8(exx, exy, exz, enx, eny, enz, nx, ny, nz), cut);
+  float8 sum = horizon_end8(&h, nx, ny, nz);
   /* Only points strictly in front of the face see it. */
   float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
   return select((float8)(0.0f), sum, front > 0.0f);
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * Apertures (host/shadow/aperture.hpp). For the lanes that use the aperture: the visible part of
+ * the face, face ∩ cone(P, A), as a rectangle relative to P. A projects from P onto the face's
+ * plane by the homothety of ratio k = hS / hA about P (hS, hA: P's heights above the face's
+ * and A's planes), so the rectangle is the min/max of two rectangles. Empty (u1 <= u0 or
+ * v1 <= v0): the wall hides the whole face. */
+
+typedef struct {
+  int8 use;              /* lanes strictly in front of A and inside the room's box */
+  float8 u0, u1, v0, v1; /* the visible rectangle, coordinates relative to P's */
+  float8 depth;          /* the face's plane relative to P along the emission direction */
+} ApertureView8;
+
+inline ApertureView8 aperture_view8(float8 px, float8 py, float8 pz, PnSourceFace face,
+                                    PnAperture ap, float eps_length) {
+  ApertureView8 v;
+  float8 ha = ap.plane.x * px + ap.plane.y * py + ap.plane.z * pz - ap.plane.w;
+  float8 hs = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
+  v.use = (ha > eps_length) & (px >= ap.roomLo.x) & (px <= ap.roomHi.x) & (py >= ap.roomLo.y) &
+          (py <= ap.roomHi.y) & (pz >= ap.roomLo.z) & (pz <= ap.roomHi.z);
+  float8 pu = ap.axisU.x * px + ap.axisU.y * py + ap.axisU.z * pz;
+  float8 pv = ap.axisV.x * px + ap.axisV.y * py + ap.axisV.z * pz;
+  /* A's side at offset d from P lands at k·d = d + d·(t / hA) on the face's plane (t = hS − hA,
+   * the wall's thickness): the large part d keeps the one rounding of a vertex difference, as
+   * the face's own sides do; k·d rounds relative to d, 1e-6 of the window at 10 m. */
+  float8 g = ap.thickness.x / ha;
+  float8 du0 = ap.openingRect.x - pu, du1 = ap.openingRect.y - pu;
+  float8 dv0 = ap.openingRect.z - pv, dv1 = ap.openingRect.w - pv;
+  v.u0 = fmax(ap.sourceRect.x - pu, du0 + du0 * g);
+  v.u1 = fmin(ap.sourceRect.y - pu, du1 + du1 * g);
+  v.v0 = fmax(ap.sourceRect.z - pv, dv0 + dv0 * g);
+  v.v1 = fmin(ap.sourceRect.w - pv, dv1 + dv1 * g);
+  v.depth = -hs;
+  return v;
+}
+
+/* Corner i (0..3, counter-clockwise about the emission direction) of the visible rectangle,
+ * relative to P. */
+inline void aperture_corner8(ApertureView8 v, PnAperture ap, float4 n, int i, float8* x, float8* y,
+                             float8* z) {
+  float8 u = (i == 0 || i == 3) ? v.u0 : v.u1;
+  float8 w = (i < 2) ? v.v0 : v.v1;
+  *x = u * ap.axisU.x + w * ap.axisV.x + v.depth * n.x;
+  *y = u * ap.axisU.y + w * ap.axisV.y + v.depth * n.y;
+  *z = u * ap.axisU.z + w * ap.axisV.z + v.depth * n.z;
+}
+
+inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane, float8 nx,
+                                   float8 ny, float8 nz) {
+  HorizonSum8 h;
+  horizon_begin8(&h);
+  float8 ax, ay, az;
+  aperture_corner8(v, ap, plane, 0, &ax, &ay, &az);
+  float8 ha = nx * ax + ny * ay + nz * az;
+  for (int i = 0; i < 4; ++i) {
+    float8 bx, by, bz;
+    aperture_corner8(v, ap, plane, (i + 1) & 3, &bx, &by, &bz);
+    float8 hb = nx * bx + ny * by + nz * bz;
+    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
+    ax = bx;
+    ay = by;
+    az = bz;
+    ha = hb;
+  }
+  return horizon_end8(&h, nx, ny, nz);
+}
+
+/* Lanes for which the occluder cannot meet conv(P, visible rectangle): all its vertices lie
+ * outside one side plane of that pyramid, by more than eps_length across at their depth. A
+ * point x (from P) at depth h towards the face is inside iff u0·h <= x·axisU·hS <= u1·h (and
+ * the same in v), hS the face's depth. */
+inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8 v, PnAperture ap,
+                                  float4 n, PnOccluder o, __global const float4* overts,
+                                  float eps_length) {
+  float8 hs = -v.depth, margin = eps_length * hs;
+  int8 u0 = -1, u1 = -1, v0 = -1, v1 = -1;
+  for (int k = 0; k < o.vertexCount; ++k) {
+    float4 q = overts[o.firstVertex + k];
+    float8 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
+    float8 xu = (ap.axisU.x * dx + ap.axisU.y * dy + ap.axisU.z * dz) * hs;
+    float8 xv = (ap.axisV.x * dx + ap.axisV.y * dy + ap.axisV.z * dz) * hs;
+    float8 h = -(n.x * dx + n.y * dy + n.z * dz);
+    u0 &= xu < v.u0 * h - margin;
+    u1 &= xu > v.u1 * h + margin;
+    v0 &= xv < v.v0 * h - margin;
+    v1 &= xv > v.v1 * h + margin;
+    if (!any(u0 | u1 | v0 | v1)) break;
+  }
+  return u0 | u1 | v0 | v1;
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -96,8 +210,9 @@ inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float
  *  - P lies on it (the solid P belongs to), or
  *  - one of its separating planes (faces whose closed outside holds the whole source face) has
  *    P in its closed outside too: every segment P→source then stays in that half-space, or
- *  - its bounding sphere misses the pyramid P + cone(face) (outside one side plane or wholly
- *    below the horizon). */
+ *  - it misses the pyramid P + cone(S'), S' the visible part of the face before occlusion:
+ *    its bounding sphere outside one side plane or wholly below the horizon, or (through an
+ *    aperture) all its vertices outside one side plane (outside_source_pyramid). */
 
 inline bool occluder_separated(float3 p, PnOccluder o, __global const float4* planes,
                                float eps_length) {
@@ -128,23 +243,6 @@ inline int occluder_count(PnPatchFace pf, PnSourceFace face) {
 inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face,
                           __global const int* candidates) {
   return pf.candidateCount < 0 ? face.firstOccluder + i : candidates[pf.firstCandidate + i];
-}
-
-inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
-                                   __global const float4* vertices) {
-  float3 c = o.bound.xyz - p;
-  float r = o.bound.w;
-  if (dot(n, c) < -r) return true;
-  const int m = face.vertexCount;
-  float3 a = vertices[face.firstVertex].xyz - p;
-  for (int i = 0; i < m; ++i) {
-    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
-    /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
-    float3 side = cross(a, b);
-    if (dot(side, c) > r * length(side)) return true;
-    a = b;
-  }
-  return false;
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -232,6 +330,47 @@ int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
     }
   }
   return count;
+}
+
+/* The plain path's test (kept as the foundation had it): the bounding sphere against the pyramid
+ * P + cone(face). */
+inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
+                                   __global const float4* vertices) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  const int m = face.vertexCount;
+  float3 a = vertices[face.firstVertex].xyz - p;
+  for (int i = 0; i < m; ++i) {
+    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+    /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
+    float3 side = cross(a, b);
+    if (dot(side, c) > r * length(side)) return true;
+    a = b;
+  }
+  return false;
+}
+
+/* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->sm): its bounding
+ * sphere is below the horizon or outside a side plane; or, for a lane that sees the face through
+ * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
+ * outside a side plane by more than eps_length. */
+bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                            bool vertices, __global const float4* overts, float eps_length) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  for (int i = 0; i < st->ns; ++i)
+    if (dot(st->sm[i], c) > r) return true; /* (a zero normal never passes) */
+  if (!vertices) return false;
+  for (int i = 0; i < st->ns; ++i) {
+    float3 m = st->sm[i]; /* a zero normal (no plane) never has the vertices outside */
+    bool out = true;
+    for (int k = 0; k < o.vertexCount && out; ++k)
+      out = dot(m, overts[o.firstVertex + k].xyz - p) > eps_length;
+    if (out) return true;
+  }
+  return false;
 }
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
@@ -432,26 +571,36 @@ float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX
   return sum;
 }
 
+/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
+ * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
 float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf,
                     __global const int* candidates, int use_volumes,
                     __global const float4* vertices, __global const PnOccluder* occluders,
                     __global const float4* planes, __global const int4* edges,
-                    __global const float4* overts, float eps_length, int* error) {
+                    __global const float4* overts, float eps_length, bool aperture,
+                    const float3* corners, int* error) {
   if (dot(face.plane.xyz, p) - face.plane.w <= 0.0f) return 0.0f;
   PenumbraState st;
 
-  /* S': the face clipped by the horizon plane through P (Sutherland–Hodgman). */
+  /* S': the face (or its visible rectangle) clipped by the horizon plane through P
+   * (Sutherland–Hodgman). */
   st.ns = 0;
-  const int m = face.vertexCount;
-  float3 a = vertices[face.firstVertex].xyz - p;
-  float ha = dot(n, a);
-  for (int i = 0; i < m; ++i) {
-    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
-    float hb = dot(n, b);
-    if (ha >= 0.0f) st.sv[st.ns++] = a;
-    if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
-    a = b;
-    ha = hb;
+  if (aperture) {
+    for (int i = 0; i < 4; ++i) st.sv[i] = corners[i];
+    st.ns = 4;
+    clip_source(&st, n);
+  } else {
+    const int m = face.vertexCount;
+    float3 a = vertices[face.firstVertex].xyz - p;
+    float ha = dot(n, a);
+    for (int i = 0; i < m; ++i) {
+      float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+      float hb = dot(n, b);
+      if (ha >= 0.0f) st.sv[st.ns++] = a;
+      if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
+      a = b;
+      ha = hb;
+    }
   }
   if (st.ns < 3) return 0.0f;
   /* A face seen edge-on (every vertex of S' within the tolerance of the horizon, e.g. a source
@@ -462,9 +611,12 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int i = 0; i < st.ns; ++i) rise = fmax(rise, dot(n, st.sv[i]) / length(st.sv[i]));
   if (rise <= PN_EPS_REL) return 0.0f;
 
+  for (int i = 0; i < st.ns; ++i)
+    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+
   /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
-   * P is outside their penumbra volume or their bounding sphere misses the pyramid to the
-   * face); those with none are solids P lies on. */
+   * P is outside their penumbra volume or they miss the pyramid to S'); those with none are
+   * solids P lies on. */
   st.na = 0;
   st.first_contour[0] = 0;
   int contacts = 0;
@@ -475,6 +627,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int i = 0; i < count; ++i) {
     const int k = occluder_index(i, pf, face, candidates);
     PnOccluder o = occluders[k];
+    if (aperture && o.behindAperture) continue;
     if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
     if (use_volumes && !in_penumbra_volume(p, o, planes, eps_length)) continue;
     bool any_front = false;
@@ -500,9 +653,13 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
        * many facets meet, a set of measure zero) the face most opposed to P's normal alone. */
       clip_source(&st, m == 1 ? limiting[0] : opposed);
       if (st.ns < 3) return 0.0f;
+      for (int i = 0; i < st.ns; ++i)
+        st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
       continue;
     }
-    if (sphere_outside_pyramid(p, n, o, face, vertices)) continue;
+    if (use_volumes ? outside_source_pyramid(&st, p, n, o, aperture, overts, eps_length)
+                    : sphere_outside_pyramid(p, n, o, face, vertices))
+      continue;
     if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
@@ -532,6 +689,289 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
 }
 
 /* ---------------------------------------------------------------------------------------------
+ * The penumbra path in eight lanes (culling only; the plain path keeps the scalar one above).
+ * The same method and tie rule as penumbra_face, with every lane's view in one float8:
+ *  - the active occluders are the union over the lanes (each with a lane mask), in candidate
+ *    order, so "lower index" means the same in every lane;
+ *  - every edge of an active occluder is kept with a per-lane contour mask and orientation;
+ *  - S' is the face (or the lane's aperture rectangle) with each edge's part above the horizon
+ *    and, where the horizon cuts it, the chord: its side planes are the face's edge planes and,
+ *    in cut lanes, the horizon plane;
+ *  - the visible parts of an edge are [lo, hi] minus the union of the intervals the other
+ *    regions cover: a visible piece starts at lo or at the end of a covering interval that no
+ *    other interval covers, and ends at the next interval's start or hi; each piece is one
+ *    float8 edge term for the lanes that have it.
+ * Lanes this path does not take (a solid touching P, more occluders or edges than it holds, an
+ * occluder with more faces than it tracks) are returned in `rest` for the scalar path. */
+
+#define PN_VEC_OCCLUDERS 8 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 96    /* their edges in all */
+#define PN_VEC_FACES 16    /* faces of one occluder */
+#define PN_VEC_SOURCE 8    /* vertices of the face */
+
+typedef struct {
+  float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
+  float8 mx, my, mz;             /* unit side-plane normal along cross(a, b); 0: none */
+  int8 on;                       /* lanes where it is a contour edge of the occluder */
+} ContourEdge8;
+
+typedef struct {
+  ContourEdge8 e[PN_VEC_EDGES];
+  int8 act[PN_VEC_OCCLUDERS]; /* the lanes each occluder is active in */
+  int first[PN_VEC_OCCLUDERS + 1];
+  int na;
+} Contours8;
+
+inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                         float8* mx, float8* my, float8* mz) {
+  float8 cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+  float8 len = sqrt(cx * cx + cy * cy + cz * cz);
+  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  int8 none = len <= PN_EPS_REL * la * lb;
+  *mx = select(cx / len, (float8)(0.0f), none);
+  *my = select(cy / len, (float8)(0.0f), none);
+  *mz = select(cz / len, (float8)(0.0f), none);
+}
+
+/* clip_interval in eight lanes: clips [t0, t1] to {t : f0 + t (f1 - f0) >= 0} in the lanes of
+ * `clip`; returns the lanes where the interval is not empty. */
+inline int8 clip_interval8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1) {
+  int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
+  float8 t = f0 / (f0 - f1);
+  *t0 = select(*t0, fmax(*t0, t), clip & n0 & ~n1);
+  *t1 = select(*t1, fmin(*t1, t), clip & ~n0 & n1);
+  return ~(clip & n0 & n1) & (*t1 > *t0);
+}
+
+inline float8 edge_point8(float8 a, float8 b, float8 t) {
+  return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
+}
+
+/* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
+ * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
+float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                          float8 lo, float8 hi, int8 on, int owner, float8 nx, float8 ny, float8 nz,
+                          const Contours8* cs) {
+  if (!any(on)) return 0.0f;
+  float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
+  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
+  int8 cov[PN_VEC_OCCLUDERS];
+  for (int v = 0; v < cs->na; ++v) {
+    float8 t0 = 0.0f, t1 = 1.0f;
+    int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
+    for (int k = cs->first[v]; k < cs->first[v + 1] && any(covers); ++k) {
+      const ContourEdge8* e = &cs->e[k];
+      int8 use = covers & e->on & ((e->mx != 0.0f) | (e->my != 0.0f) | (e->mz != 0.0f));
+      if (!any(use)) continue;
+      float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
+      float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
+      int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
+      if (owner < v) /* same visible side: this edge is the one kept */
+        covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
+      covers &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
+    }
+    c0[v] = t0;
+    c1[v] = t1;
+    cov[v] = covers;
+  }
+  /* Visible pieces: candidate starts lo and each covering interval's end. */
+  float8 starts[PN_VEC_OCCLUDERS + 1];
+  int8 kept[PN_VEC_OCCLUDERS + 1];
+  float8 sum = 0.0f;
+  for (int j = -1; j < cs->na; ++j) {
+    float8 st = j < 0 ? lo : c1[j];
+    int8 valid = j < 0 ? on : cov[j];
+    valid &= (st >= lo) & (st < hi);
+    float8 end = hi;
+    for (int w = 0; w < cs->na && any(valid); ++w) {
+      valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
+      end = select(end, fmin(end, c0[w]), cov[w] & (c0[w] > st));
+    }
+    for (int i = 0; i <= j && any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
+    starts[j + 1] = st;
+    kept[j + 1] = valid;
+    valid &= end > st;
+    if (!any(valid)) continue;
+    float8 term = edge_term8(edge_point8(ax, bx, st), edge_point8(ay, by, st),
+                             edge_point8(az, bz, st), edge_point8(ax, bx, end),
+                             edge_point8(ay, by, end), edge_point8(az, bz, end), nx, ny, nz);
+    sum += select((float8)(0.0f), term, valid);
+  }
+  return sum;
+}
+
+/* E of the face at the lanes in `todo` (others 0), and in *rest the lanes left to the scalar
+ * path. */
+float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
+                      int8 todo, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
+                      ApertureView8 view, PnAperture ap, __global const float4* vertices,
+                      __global const PnOccluder* occluders, __global const float4* planes,
+                      __global const int4* edges, __global const float4* overts, float eps_length,
+                      int8* rest) {
+  *rest = 0;
+  const int m = face.vertexCount;
+  if (m > PN_VEC_SOURCE) {
+    *rest = todo;
+    return 0.0f;
+  }
+  /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
+  float8 sx[PN_VEC_SOURCE], sy[PN_VEC_SOURCE], sz[PN_VEC_SOURCE], sh[PN_VEC_SOURCE];
+  for (int i = 0; i < m; ++i) {
+    float4 q = vertices[face.firstVertex + i];
+    sx[i] = q.x - px;
+    sy[i] = q.y - py;
+    sz[i] = q.z - pz;
+    if (any(view.use)) {
+      float8 cx, cy, cz;
+      aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
+      sx[i] = select(sx[i], cx, view.use);
+      sy[i] = select(sy[i], cy, view.use);
+      sz[i] = select(sz[i], cz, view.use);
+    }
+    sh[i] = nx * sx[i] + ny * sy[i] + nz * sz[i];
+  }
+  /* Lanes behind the face, or that see it edge-on (penumbra_face), get 0. */
+  float8 rise = 0.0f;
+  for (int i = 0; i < m; ++i)
+    rise = fmax(rise, sh[i] / sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]));
+  int8 lanes = todo &
+               (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
+               (rise > PN_EPS_REL);
+  if (!any(lanes)) return 0.0f;
+  /* Side planes of S': the face's edges, and the horizon where it cuts the face. */
+  float8 smx[PN_VEC_SOURCE], smy[PN_VEC_SOURCE], smz[PN_VEC_SOURCE];
+  float8 hx0 = 0.0f, hy0 = 0.0f, hz0 = 0.0f, hx1 = 0.0f, hy1 = 0.0f, hz1 = 0.0f; /* the chord */
+  int8 has_exit = 0, has_entry = 0;
+  for (int i = 0; i < m; ++i) {
+    int j = i + 1 == m ? 0 : i + 1;
+    side_normal8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], &smx[i], &smy[i], &smz[i]);
+    int8 a_in = sh[i] >= 0.0f, b_in = sh[j] >= 0.0f;
+    float8 t = sh[i] / (sh[i] - sh[j]);
+    float8 cx = edge_point8(sx[i], sx[j], t), cy = edge_point8(sy[i], sy[j], t),
+           cz = edge_point8(sz[i], sz[j], t);
+    int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
+    hx0 = select(hx0, cx, leaves);
+    hy0 = select(hy0, cy, leaves);
+    hz0 = select(hz0, cz, leaves);
+    hx1 = select(hx1, cx, enters);
+    hy1 = select(hy1, cy, enters);
+    hz1 = select(hz1, cz, enters);
+    has_exit |= leaves;
+    has_entry |= enters;
+  }
+  int8 cut = has_exit & has_entry;
+  float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
+  if (any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+
+  /* The active occluders and their edges. */
+  Contours8 cs;
+  cs.na = 0;
+  cs.first[0] = 0;
+  const int count = occluder_count(pf, face);
+  for (int i = 0; i < count; ++i) {
+    PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
+    int8 act = lanes & (own != (int8)(o.solid));
+    if (o.behindAperture) act &= ~view.use;
+    for (int j = 0; j < o.separatingCount && any(act); ++j) {
+      float4 pl = planes[o.firstSeparating + j];
+      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
+    }
+    for (int j = 0; j < o.penumbraCount && any(act); ++j) {
+      float4 pl = planes[o.firstPenumbra + j];
+      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
+    }
+    if (!any(act)) continue;
+    /* The bounding sphere against the pyramid P + cone(S'). */
+    float8 cx = o.bound.x - px, cy = o.bound.y - py, cz = o.bound.z - pz;
+    act &= (nx * cx + ny * cy + nz * cz) >= -o.bound.w;
+    for (int j = 0; j < m && any(act); ++j)
+      act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
+    if (any(act & view.use))
+      act &= ~(view.use &
+               misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+    if (!any(act)) continue;
+    if (o.planeCount > PN_VEC_FACES || cs.na == PN_VEC_OCCLUDERS ||
+        cs.first[cs.na] + o.edgeCount > PN_VEC_EDGES) {
+      *rest |= act;
+      continue;
+    }
+    int8 front[PN_VEC_FACES];
+    int8 any_front = 0;
+    for (int j = 0; j < o.planeCount; ++j) {
+      float4 pl = planes[o.firstPlane + j];
+      front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
+      any_front |= front[j];
+    }
+    *rest |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
+    act &= any_front;
+    if (!any(act)) continue;
+    int c = cs.first[cs.na];
+    for (int k = 0; k < o.edgeCount; ++k) {
+      int4 ed = edges[o.firstEdge + k];
+      int8 lf = front[ed.z], rf = front[ed.w];
+      int8 on = act & (lf ^ rf);
+      if (!any(on)) continue;
+      float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
+      float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
+      float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
+      ContourEdge8* e = &cs.e[c++];
+      /* run as the face that does not see P does (contour_edge) */
+      e->ax = select(fx, gx, lf);
+      e->ay = select(fy, gy, lf);
+      e->az = select(fz, gz, lf);
+      e->bx = select(gx, fx, lf);
+      e->by = select(gy, fy, lf);
+      e->bz = select(gz, fz, lf);
+      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &e->mx, &e->my, &e->mz);
+      e->on = on;
+    }
+    cs.act[cs.na] = act;
+    ++cs.na;
+    cs.first[cs.na] = c;
+  }
+  lanes &= ~*rest;
+
+  float8 sum = 0.0f;
+  /* (a) The source's edges above the horizon, and the chord. */
+  for (int i = 0; i < m; ++i) {
+    int j = i + 1 == m ? 0 : i + 1;
+    int8 a_in = sh[i] >= 0.0f, b_in = sh[j] >= 0.0f;
+    float8 t = sh[i] / (sh[i] - sh[j]);
+    float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
+    sum += visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], lo, hi,
+                              lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
+  }
+  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, (float8)(0.0f), (float8)(1.0f),
+                            lanes & cut, -1, nx, ny, nz, &cs);
+  /* (b) The occluders' contour edges inside S', as holes. */
+  for (int u = 0; u < cs.na; ++u)
+    for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
+      const ContourEdge8* e = &cs.e[k];
+      int8 on = lanes & e->on;
+      if (!any(on)) continue;
+      float8 la = sqrt(e->ax * e->ax + e->ay * e->ay + e->az * e->az);
+      float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
+      float8 t0 = 0.0f, t1 = 1.0f;
+      for (int i = 0; i <= m && any(on); ++i) {
+        float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
+        int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
+        if (i == m) use &= cut;
+        if (!any(use)) continue;
+        float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
+        float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
+        /* In a side plane of S': the source keeps it, or the visible region is empty there. */
+        int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
+        on &= ~inplane;
+        on &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
+      }
+      sum += visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, t0, t1, on, u, nx, ny, nz,
+                                &cs);
+    }
+  return select((float8)(0.0f), fmax(sum, 0.0f), lanes);
+}
+
+/* ---------------------------------------------------------------------------------------------
  * Shadow tests of one face for eight lanes (DESIGN.md step 3). With volumes: a lane deeper than
  * eps inside an umbra volume gets 0; one inside a penumbra volume (grown by eps) takes the
  * penumbra path; the rest keep the unoccluded value. Without (the plain path): a lane takes the
@@ -544,8 +984,10 @@ typedef struct {
 
 ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
                           PnPatchFace pf, __global const int* candidates, int use_volumes,
-                          __global const PnOccluder* occluders, __global const float4* planes,
+                          ApertureView8 view, PnAperture ap, __global const PnOccluder* occluders,
+                          __global const float4* planes, __global const float4* overts,
                           float eps_length) {
+  const int8 aperture = view.use;
   ShadowTests t;
   t.umbra = 0;
   t.shaded = 0;
@@ -553,12 +995,20 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
   for (int i = 0; i < count; ++i) {
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
     int8 inside = own != (int8)(o.solid);
+    if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (use_volumes) {
       for (int j = 0; j < o.penumbraCount && any(inside); ++j) {
         float4 pl = planes[o.firstPenumbra + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
       if (!any(inside)) continue;
+      /* The volume is the occluder's against the whole face; lanes that see only a rectangle of
+       * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
+      if (any(inside & aperture)) {
+        inside &= ~(aperture &
+                    misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+        if (!any(inside)) continue;
+      }
       t.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
@@ -583,7 +1033,10 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
  * The kernel: E (lx) at PN_LANES points per work-item, summed over every source face, and each
  * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
  * an occluder may block), written source by source with row length class_stride.
- * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. */
+ * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES.
+ * use_volumes: 0 the plain path (every occluder, separating planes, scalar penumbra path); bit 0
+ * culling (face classes, candidates, volumes, apertures); bit 1 with it, the eight-lane penumbra
+ * path. */
 
 __kernel void illuminance(__global const float* px_, __global const float* py_,
                           __global const float* pz_, __global const float* nx_,
@@ -593,9 +1046,9 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
                           __global const PnOccluder* occluders, __global const float4* planes,
                           __global const int4* edges, __global const float4* overts,
                           const float eps_length, __global const PnPatchFace* patch_faces,
-                          __global const int* candidates, const int use_volumes,
-                          const int per_source, __global float* out, __global int* errors,
-                          __global uchar* classes, const int class_stride) {
+                          __global const int* candidates, __global const PnAperture* apertures,
+                          const int use_volumes, const int per_source, __global float* out,
+                          __global int* errors, __global uchar* classes, const int class_stride) {
   const size_t g = get_global_id(0);
   float8 px = vload8(g, px_), py = vload8(g, py_), pz = vload8(g, pz_);
   float8 nx = vload8(g, nx_), ny = vload8(g, ny_), nz = vload8(g, nz_);
@@ -619,22 +1072,63 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
     PnSourceFace face = faces[f];
     PnPatchFace pf = patch_faces[g * face_count + f];
     if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
-      float8 e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      /* Lanes that see the face through its aperture (culling only): its visible rectangle;
+       * `dark` lanes see none of it past the wall. */
+      ApertureView8 view;
+      PnAperture ap;
+      view.use = 0;
+      view.u0 = view.u1 = view.v0 = view.v1 = view.depth = 0.0f;
+      if (use_volumes && face.aperture >= 0) {
+        ap = apertures[face.aperture];
+        view = aperture_view8(px, py, pz, face, ap, eps_length);
+      }
+      int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
+      float8 e_face = 0.0f;
+      if (!all(view.use)) e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      if (any(view.use & ~dark))
+        e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
+      e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
-      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, occluders,
-                                    planes, eps_length);
+      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view, ap,
+                                    occluders, planes, overts, eps_length);
+      t.shaded &= ~dark;
+      t.umbra |= dark;
+      facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
-      if (any(t.shaded)) {
+      int8 scalar_lanes = t.shaded;
+      if ((use_volumes & 2) && any(t.shaded)) {
+        float8 e_pen =
+            penumbra_face8(px, py, pz, nx, ny, nz, own, t.shaded, face, pf, candidates, view, ap,
+                           vertices, occluders, planes, edges, overts, eps_length, &scalar_lanes);
+        e_face = select(e_face, e_pen, t.shaded & ~scalar_lanes);
+      }
+      if (any(scalar_lanes)) {
         float lane_e[PN_LANES];
         int lane_shaded[PN_LANES];
         vstore8(e_face, 0, lane_e);
-        vstore8(t.shaded, 0, lane_shaded);
+        vstore8(scalar_lanes, 0, lane_shaded);
+        int lane_ap[PN_LANES];
+        float lane_cx[4][PN_LANES], lane_cy[4][PN_LANES], lane_cz[4][PN_LANES];
+        vstore8(view.use, 0, lane_ap);
+        if (any(view.use & scalar_lanes))
+          for (int i = 0; i < 4; ++i) {
+            float8 cx, cy, cz;
+            aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
+            vstore8(cx, 0, lane_cx[i]);
+            vstore8(cy, 0, lane_cy[i]);
+            vstore8(cz, 0, lane_cz[i]);
+          }
         for (int l = 0; l < PN_LANES; ++l) {
           if (!lane_shaded[l]) continue;
           float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
           float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
+          float3 corners[4];
+          if (lane_ap[l])
+            for (int i = 0; i < 4; ++i)
+              corners[i] = (float3)(lane_cx[i][l], lane_cy[i][l], lane_cz[i][l]);
           lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes, vertices,
-                                    occluders, planes, edges, overts, eps_length, &error);
+                                    occluders, planes, edges, overts, eps_length, lane_ap[l] != 0,
+                                    corners, &error);
         }
         e_face = vload8(0, lane_e);
       }

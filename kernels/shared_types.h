@@ -40,8 +40,22 @@ typedef struct {
   pn_int firstOccluder, occluderCount;
   float halfLuminance; /* L/2 in cd/m²: the factor in front of Lambert's contour integral */
   pn_int source;       /* index of the scene source */
-  pn_int pad0, pad1;
+  pn_int aperture;     /* index into the apertures, -1 for none */
+  pn_int pad1;
 } PnSourceFace;
+
+/* A face that fills an opening of the room, seen through the opening's room-side rectangle A
+ * (host/shadow/aperture.hpp). A lane strictly in front of A's plane (by more than the length
+ * tolerance) and inside the closed room box sees only face ∩ cone(P, A), and skips the occluders
+ * flagged behindAperture. Rectangles are (u0, u1, v0, v1) in the frame u = x·axisU,
+ * v = x·axisV, with axisU × axisV the emission direction. */
+typedef struct {
+  pn_float4 plane;          /* A's plane: xyz the emission direction, w offset */
+  pn_float4 roomLo, roomHi; /* the room's box, rounded inwards to float */
+  pn_float4 axisU, axisV;
+  pn_float4 sourceRect, openingRect;
+  pn_float4 thickness; /* x: A's offset minus the face's (the wall's thickness); yzw 0 */
+} PnAperture;
 
 /* A solid clipped to one source face's front half-space. Planes are outward; edges are
  * (from, to, left face, right face), local to this occluder: `left` is the face whose
@@ -57,8 +71,9 @@ typedef struct {
   pn_int firstSeparating, separatingCount;
   pn_int firstPenumbra, penumbraCount;
   pn_int firstUmbra, umbraCount;
-  pn_int solid; /* scene solid it was clipped from */
-  pn_int pad0, pad1, pad2;
+  pn_int solid;          /* scene solid it was clipped from */
+  pn_int behindAperture; /* 1: cannot shade lanes that see the face through its aperture */
+  pn_int pad1, pad2;
 } PnOccluder;
 
 /* Per work-item (a patch of PN_LANES points) and source face: where its candidate occluders

@@ -41,12 +41,14 @@ Scene withoutSolids(Scene scene) {
 
 // Culling changes which occluders a sample considers, never the answer: per point, the two
 // paths agree to 1e-6 of the point's unoccluded illuminance (the size of the terms the kernel
-// sums in float; a heavily shaded point's E is a small difference of such terms).
+// sums in float; a heavily shaded point's E is a small difference of such terms). This holds the
+// culling itself (volumes, candidates) with the plain path's arithmetic: apertures off and the
+// scalar penumbra path. The fast paths change the arithmetic (Culling.FastPaths* below).
 void expectCullingChangesNothing(const std::string& file) {
   const Scene scene = loadScene(file);
   const std::vector<SamplePoint> points = allGridPoints(scene);
   ASSERT_FALSE(points.empty()) << file;
-  IlluminanceEngine culled(cpuDevice(), scene, EngineOptions{true});
+  IlluminanceEngine culled(cpuDevice(), scene, EngineOptions{true, false, false});
   IlluminanceEngine plain(cpuDevice(), scene, EngineOptions{false});
   IlluminanceEngine open(cpuDevice(), withoutSolids(scene));
   const std::vector<double> a = culled.illuminance(points);
@@ -71,6 +73,61 @@ TEST(Culling, SameIlluminanceOnTheOffice) {
 
 TEST(Culling, SameIlluminanceOnTheOpenOffice) {
   expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/open-office.yaml");
+}
+
+// The defaults add apertures (a window's visible rectangle instead of the sky minus the reveals)
+// and the eight-lane penumbra path (the same method in float8, with its own rounding). Each path
+// errs by its float rounding, which at a distant, mostly hidden source is a few 1e-6 of
+// E_unoccluded (Aperture.MeetsTheExactRectangleInAnEmptyRoom: culled 1.5e-6, plain 5.8e-6), so
+// they can no longer agree to 1e-6. Held instead: the two agree to the kernel's own tolerance,
+// Tolerance::kKernelRelative, everywhere. Printed, not asserted: where they disagree most, both
+// against the reference (n = 1024), whose own error (about 1e-6 of each source's unoccluded
+// value) is as large as the disagreement; on the open office the two are equally far from it
+// (2.6e-6 culled, 2.8e-6 plain, measured).
+void expectFastPathsAsAccurate(const std::string& file) {
+  const Scene scene = loadScene(file);
+  const std::vector<SamplePoint> points = allGridPoints(scene);
+  const std::vector<double> a = IlluminanceEngine(cpuDevice(), scene).illuminance(points);
+  const std::vector<double> b =
+      IlluminanceEngine(cpuDevice(), scene, EngineOptions{false}).illuminance(points);
+  const std::vector<double> scale =
+      IlluminanceEngine(cpuDevice(), withoutSolids(scene)).illuminance(points);
+  double worst = 0.0;
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    order[i] = i;
+    worst = std::max(worst, std::abs(a[i] - b[i]) / scale[i]);
+    EXPECT_LE(std::abs(a[i] - b[i]), Tolerance::kKernelRelative * scale[i])
+        << file << " point " << i << " at (" << points[i].position.transpose() << ")";
+  }
+  const std::size_t checked = std::min<std::size_t>(10, points.size());
+  std::partial_sort(order.begin(), order.begin() + checked, order.end(),
+                    [&](std::size_t i, std::size_t j) {
+                      return std::abs(a[i] - b[i]) / scale[i] > std::abs(a[j] - b[j]) / scale[j];
+                    });
+  std::vector<SamplePoint> worstPoints;
+  for (std::size_t k = 0; k < checked; ++k) worstPoints.push_back(points[order[k]]);
+  const std::vector<double> reference = referenceIlluminance(scene, worstPoints, 1024);
+  double culledError = 0.0, plainError = 0.0;
+  for (std::size_t k = 0; k < checked; ++k) {
+    const std::size_t i = order[k];
+    const double ec = std::abs(a[i] - reference[k]) / scale[i];
+    const double ep = std::abs(b[i] - reference[k]) / scale[i];
+    culledError = std::max(culledError, ec);
+    plainError = std::max(plainError, ep);
+  }
+  std::printf(
+      "%s: worst |culled - plain| / E_unoccluded = %.2e; at the %zu worst points, "
+      "|E - reference| / E_unoccluded up to %.2e culled, %.2e plain\n",
+      file.c_str(), worst, checked, culledError, plainError);
+}
+
+TEST(Culling, FastPathsOnTheOffice) {
+  expectFastPathsAsAccurate(PENUMBRA_SOURCE_DIR "/data/office.yaml");
+}
+
+TEST(Culling, FastPathsOnTheOpenOffice) {
+  expectFastPathsAsAccurate(PENUMBRA_SOURCE_DIR "/data/open-office.yaml");
 }
 
 class CullingOnCie171 : public ::testing::TestWithParam<std::string> {};

@@ -28,7 +28,7 @@ struct IlluminanceEngine::State {
   SceneShadows shadows;
   KernelScene packed;
   compute::Program program;
-  DeviceBuffer faces, sourceVertices, occluders, planes, edges, occluderVertices;
+  DeviceBuffer faces, apertures, sourceVertices, occluders, planes, edges, occluderVertices;
   std::size_t sceneBytes = 0;  // what the buffers above take on the device
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
@@ -43,9 +43,12 @@ struct IlluminanceEngine::State {
     compute::Device& d = *device;
     shadows = buildSceneShadows(scene);
     packed = packScene(scene, shadows);
-    const std::vector<std::size_t> tables = {
-        bytes(packed.faces),  bytes(packed.sourceVertices), bytes(packed.occluders),
-        bytes(packed.planes), bytes(packed.edges),          bytes(packed.occluderVertices)};
+    if (!options.apertures)
+      for (PnSourceFace& f : packed.faces) f.aperture = -1;
+    const std::vector<std::size_t> tables = {bytes(packed.faces),           bytes(packed.apertures),
+                                             bytes(packed.sourceVertices),  bytes(packed.occluders),
+                                             bytes(packed.planes),          bytes(packed.edges),
+                                             bytes(packed.occluderVertices)};
     compute::requireDeviceMemory(
         d.info(), tables, 0,
         fmt::format("the scene (source faces: {}, occluders: {})", packed.faces.size(),
@@ -54,6 +57,7 @@ struct IlluminanceEngine::State {
     sceneBytes = 0;
     for (std::size_t b : tables) sceneBytes += b;
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
+    apertures = DeviceBuffer::upload<PnAperture>(d, packed.apertures);
     sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
@@ -174,7 +178,9 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   launch.arg(a++, state_->packed.epsLength);
   launch.arg(a++, patchBuffer);
   launch.arg(a++, candidateBuffer);
-  launch.arg(a++, state_->options.culling ? 1 : 0);
+  launch.arg(a++, state_->apertures);
+  // use_volumes: bit 0 culling, bit 1 the eight-lane penumbra path.
+  launch.arg(a++, state_->options.culling ? (state_->options.vectorPenumbra ? 3 : 1) : 0);
   launch.arg(a++, bySource ? 1 : 0);
   launch.arg(a++, out);
   launch.arg(a++, errors);

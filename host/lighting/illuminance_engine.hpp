@@ -17,6 +17,13 @@ struct EngineOptions {
   // penumbra volume meets its patch, umbra samples get 0 at once, lit ones the plain contour
   // integral. Off: every sample considers every occluder (the foundation's path), for comparison.
   bool culling = true;
+  // With culling only: a window's sky on the wall's outer plane is seen through the opening
+  // (shadow/aperture.hpp), and the wall around it is skipped. Off: the reveals are occluders like
+  // any other (what the culled path did before apertures; tests compare it with the plain path).
+  bool apertures = true;
+  // With culling only: points in a penumbra take the eight-lane penumbra path
+  // (kernels/illuminance.cl, penumbra_face8). Off: the scalar path, the plain path's code.
+  bool vectorPenumbra = true;
 };
 
 struct IlluminanceResult {

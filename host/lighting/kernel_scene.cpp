@@ -2,12 +2,16 @@
 
 #include <fmt/format.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "geometry/nishita.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
+static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
 static_assert(sizeof(PnPatchFace) == 16, "PnPatchFace layout must match kernels/shared_types.h");
 
 namespace penumbra {
@@ -27,6 +31,37 @@ cl_float4 toFloat4(const Plane& plane) {
   return toFloat4(plane.normal, plane.offset);
 }
 
+cl_float4 toFloat4(const std::array<double, 4>& r) {
+  cl_float4 f;
+  for (int i = 0; i < 4; ++i) f.s[i] = static_cast<float>(r[i]);
+  return f;
+}
+
+// The box's corners rounded inwards to float, so that a float point the kernel finds inside is
+// inside the box.
+void roomBox(const BoundingBox& box, cl_float4& lo, cl_float4& hi) {
+  for (int i = 0; i < 3; ++i) {
+    float l = static_cast<float>(box.lo[i]), h = static_cast<float>(box.hi[i]);
+    if (l < box.lo[i]) l = std::nextafter(l, std::numeric_limits<float>::infinity());
+    if (h > box.hi[i]) h = std::nextafter(h, -std::numeric_limits<float>::infinity());
+    lo.s[i] = l;
+    hi.s[i] = h;
+  }
+  lo.s[3] = hi.s[3] = 0.0f;
+}
+
+PnAperture packAperture(const Aperture& a) {
+  PnAperture p{};
+  p.plane = toFloat4(a.plane);
+  roomBox(a.room, p.roomLo, p.roomHi);
+  p.axisU = toFloat4(a.axisU);
+  p.axisV = toFloat4(a.axisV);
+  p.sourceRect = toFloat4(a.sourceRect);
+  p.openingRect = toFloat4(a.openingRect);
+  p.thickness.s[0] = static_cast<float>(a.plane.offset - a.sourceDepth);
+  return p;
+}
+
 int appendPlanes(KernelScene& packed, const std::vector<Plane>& planes) {
   for (const Plane& p : planes) packed.planes.push_back(toFloat4(p));
   return static_cast<int>(planes.size());
@@ -40,6 +75,7 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
                                          shape.faces().size(), PN_MAX_OCCLUDER_FACES));
   PnOccluder o{};
   o.solid = caster.solid;
+  o.behindAperture = caster.behindAperture ? 1 : 0;
   o.firstPlane = static_cast<int>(packed.planes.size());
   o.planeCount = static_cast<int>(shape.faces().size());
   for (const auto& f : shape.faces()) packed.planes.push_back(toFloat4(f.plane));
@@ -90,6 +126,11 @@ KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
     for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(toFloat4(v));
     f.halfLuminance = static_cast<float>(0.5 * source.luminance);
     f.source = emitting.source;
+    f.aperture = -1;
+    if (emitting.aperture) {
+      f.aperture = static_cast<int>(packed.apertures.size());
+      packed.apertures.push_back(packAperture(*emitting.aperture));
+    }
     f.firstOccluder = static_cast<int>(packed.occluders.size());
     for (const ShadowCaster& caster : emitting.casters)
       appendOccluder(packed, caster, face, shadows.tolerance);

@@ -11,6 +11,7 @@ namespace penumbra {
 
 struct KernelScene {
   std::vector<PnSourceFace> faces;
+  std::vector<PnAperture> apertures;  // PnSourceFace::aperture indexes these
   std::vector<cl_float4> sourceVertices;
   std::vector<PnOccluder> occluders;  // per face, its casters in SceneShadows order
   // Occluder face planes, separating planes, penumbra planes, umbra planes.

@@ -11,9 +11,12 @@ namespace penumbra {
 
 namespace {
 
-// Work-items are grouped by 16 for a first, coarse pass over all of a face's casters; each
-// work-item then searches only its group's list.
+// Work-items are grouped by 16, and groups by 8, for coarse passes over a face's casters: the
+// casters whose volume meets a super-group's box (1 024 points), then among those the ones that
+// meet a group's box, then a work-item's. A caster that meets a box meets every box holding it,
+// so each list is the same as a search of all casters would give.
 constexpr std::size_t kItemsPerGroup = 16;
+constexpr std::size_t kGroupsPerSuper = 8;
 
 const SamplePoint& pointAt(std::span<const SamplePoint> points, std::size_t i) {
   return points[std::min(i, points.size() - 1)];
@@ -65,24 +68,36 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
   // Each group fills its own entries and a private candidate list; the lists are joined in
   // group order afterwards, so the table does not depend on the thread count.
   const std::size_t groups = (workItems + kItemsPerGroup - 1) / kItemsPerGroup;
+  const std::size_t supers = (groups + kGroupsPerSuper - 1) / kGroupsPerSuper;
+  std::vector<std::vector<int>> superCandidates(supers * faceCount);  // [super * faceCount + f]
+  tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
+    const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
+    const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
+    const EmittingFaceShadows& face = shadows.faces[sf % faceCount];
+    std::vector<int> all(face.casters.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
+    superCandidates[sf] =
+        candidatesForBox(face, boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin);
+  });
   std::vector<std::vector<cl_int>> groupCandidates(groups);
   tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t g) {
     const std::size_t firstItem = g * kItemsPerGroup;
     const std::size_t items = std::min(kItemsPerGroup, workItems - firstItem);
     const BoundingBox groupBox = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
     std::vector<cl_int>& list = groupCandidates[g];
+    std::vector<BoundingBox> itemBoxes(items);
+    for (std::size_t w = 0; w < items; ++w)
+      itemBoxes[w] = boxOf(points, (firstItem + w) * PN_LANES, PN_LANES);
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
-      std::vector<int> all(face.casters.size());
-      for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-      const std::vector<int> near = candidatesForBox(face, groupBox, all, margin);
+      const std::vector<int> near = candidatesForBox(
+          face, groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f], margin);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
         const FaceClass c = patchClass(points, w * PN_LANES, face);
         entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
-        if (c == FaceClass::C) continue;
-        const BoundingBox box = boxOf(points, w * PN_LANES, PN_LANES);
-        for (int k : candidatesForBox(face, box, near, margin))
+        if (c == FaceClass::C || near.empty()) continue;
+        for (int k : candidatesForBox(face, itemBoxes[w - firstItem], near, margin))
           list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
       }

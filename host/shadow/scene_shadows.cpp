@@ -9,7 +9,8 @@ SceneShadows buildSceneShadows(const Scene& scene) {
   shadows.tolerance = Tolerance::forSceneSize(scene.size());
   for (std::size_t s = 0; s < scene.sources.size(); ++s)
     for (const ConvexPolygon& face : scene.sources[s].faces)
-      shadows.faces.push_back(EmittingFaceShadows{static_cast<int>(s), face, {}});
+      shadows.faces.push_back(EmittingFaceShadows{
+          static_cast<int>(s), face, {}, findAperture(scene, face, shadows.tolerance)});
 
   // Every (face, solid) pair is independent: build them in parallel, then drop the empty ones
   // in order, so the result does not depend on the thread count.
@@ -21,8 +22,10 @@ SceneShadows buildSceneShadows(const Scene& scene) {
     caster.solid = static_cast<int>(k % solids);
     caster.shape = scene.solids[caster.solid].shape.clipped(f.face.plane().flipped(),
                                                             shadows.tolerance.length);
-    if (!caster.shape.empty())
-      caster.volume = shadowVolume(f.face, caster.shape, shadows.tolerance);
+    if (caster.shape.empty()) return;
+    caster.volume = shadowVolume(f.face, caster.shape, shadows.tolerance);
+    if (f.aperture)
+      caster.behindAperture = behindAperture(*f.aperture, caster.shape, shadows.tolerance);
   });
   for (std::size_t k = 0; k < all.size(); ++k)
     if (!all[k].shape.empty()) shadows.faces[k / solids].casters.push_back(std::move(all[k]));

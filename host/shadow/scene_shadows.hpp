@@ -4,10 +4,12 @@
 // positive-space of S_e"; a ceiling slab around a flush panel becomes empty or thin) with its
 // umbra and penumbra volumes. Solids left with no volume cast nothing and are dropped.
 // A polyhedron source is handled face by face (the kernel integrates it so; docs/method.md).
+#include <optional>
 #include <vector>
 
 #include "geometry/tolerance.hpp"
 #include "scene/scene.hpp"
+#include "shadow/aperture.hpp"
 #include "shadow/shadow_volume.hpp"
 
 namespace penumbra {
@@ -16,12 +18,14 @@ struct ShadowCaster {
   int solid = -1;          // index into Scene::solids
   ConvexPolyhedron shape;  // the solid clipped to the face's front half-space
   ShadowVolume volume;
+  bool behindAperture = false;  // skipped for points that see the face through its aperture
 };
 
 struct EmittingFaceShadows {
   int source = -1;  // index into Scene::sources
   ConvexPolygon face;
   std::vector<ShadowCaster> casters;
+  std::optional<Aperture> aperture;  // a window's sky seen through the opening (aperture.hpp)
 };
 
 struct SceneShadows {
