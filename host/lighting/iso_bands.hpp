@@ -26,7 +26,8 @@ struct ContourVertex {
   Vec3 position;
   int level = 0;  // index into levels
   // E jumps across the level here (a shadow edge cast by a source's own edge, a solid's foot):
-  // no point of the edge has E equal to the level, and the vertex sits on the jump.
+  // no point of the edge has E equal to the level, and the vertex sits on the jump. Also set
+  // where the refinement ran out of rounds before E settled (a shadow's corner).
   bool atJump = false;
 };
 
