@@ -801,10 +801,10 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   return sum;
 }
 
-/* E of the face at the lanes in `todo` (others 0), and in *rest the lanes left to the scalar
+/* E of the face at the lanes in `asked` (others 0), and in *rest the lanes left to the scalar
  * path. */
 float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
-                      int8 todo, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
+                      int8 asked, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
                       ApertureView8 view, PnAperture ap, __global const float4* vertices,
                       __global const PnOccluder* occluders, __global const float4* planes,
                       __global const int4* edges, __global const float4* overts, float eps_length,
@@ -812,7 +812,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   *rest = 0;
   const int m = face.vertexCount;
   if (m > PN_VEC_SOURCE) {
-    *rest = todo;
+    *rest = asked;
     return 0.0f;
   }
   /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
@@ -835,7 +835,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   float8 rise = 0.0f;
   for (int i = 0; i < m; ++i)
     rise = fmax(rise, sh[i] / sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]));
-  int8 lanes = todo &
+  int8 lanes = asked &
                (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
                (rise > PN_EPS_REL);
   if (!any(lanes)) return 0.0f;
