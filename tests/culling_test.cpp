@@ -12,6 +12,7 @@
 #include "lighting/illuminance_engine.hpp"
 #include "reference/pyramid_oracle.hpp"
 #include "reference/reference_illuminance.hpp"
+#include "sanitized_build.hpp"
 #include "scene/scene_loader.hpp"
 #include "shadow/receiver_candidates.hpp"
 #include "shadow/scene_shadows.hpp"
@@ -107,7 +108,8 @@ void expectFastPathsAsAccurate(const std::string& file) {
                     });
   std::vector<SamplePoint> worstPoints;
   for (std::size_t k = 0; k < checked; ++k) worstPoints.push_back(points[order[k]]);
-  const std::vector<double> reference = referenceIlluminance(scene, worstPoints, 1024);
+  const std::vector<double> reference =
+      referenceIlluminance(scene, worstPoints, referenceSamples(1024));
   double culledError = 0.0, plainError = 0.0;
   for (std::size_t k = 0; k < checked; ++k) {
     const std::size_t i = order[k];

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "bench/degenerate_check.hpp"
+#include "sanitized_build.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"
 
@@ -21,7 +22,7 @@ TEST(DegenerateGeometry, SeededConfigurationsHoldEveryInvariant) {
   bench::StressFigures figures;
   for (long i = 0; i < kConfigurations; ++i) {
     bench::checkDegenerateCase(bench::DegenerateGenerator::make(kSeed, i), engine, open,
-                               bench::kStressReferenceN, figures);
+                               testing::referenceSamples(bench::kStressReferenceN), figures);
   }
   for (const std::string& failure : figures.failures) ADD_FAILURE() << failure;
   EXPECT_EQ(figures.failed(), 0);
@@ -90,7 +91,9 @@ TEST(DegenerateGeometry, PointOnASolidsCornerOrEdgeSeesPastItsWedge) {
     open.solids.clear();
     const double unoccluded =
         IlluminanceEngine(testing::cpuDevice(), open).illuminance(std::span(&c.point, 1)).at(0);
-    const double reference = referenceIlluminance(*c.scene, std::span(&c.point, 1), 1024).at(0);
+    const double reference =
+        referenceIlluminance(*c.scene, std::span(&c.point, 1), testing::referenceSamples(1024))
+            .at(0);
     // The wedge hides a real part of the source: the case is not the unoccluded one in disguise.
     EXPECT_LT(reference, 0.9 * unoccluded) << c.what;
     EXPECT_GT(reference, 0.1 * unoccluded) << c.what;
