@@ -17,6 +17,12 @@
 #error "the host passes -DPN_EPS_REL"
 #endif
 
+/* Whether any lane of a mask (lanes all ones or all zeros, as comparisons give) is set. PoCL's
+ * any() extracts the eight lanes one by one; a vector OR-reduction compiles to one vptest. */
+inline bool pn_any(int8 m) {
+  return __builtin_reduce_or(m) != 0;
+}
+
 /* ---------------------------------------------------------------------------------------------
  * Lambert's term of one edge, scalar and in eight lanes. a, b are vectors from P. */
 
@@ -84,7 +90,7 @@ inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float
 
 inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   int8 cut = h->has_exit & h->has_entry;
-  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
+  if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
     h->sum += select((float8)(0.0f),
                      edge_term8(h->exx, h->exy, h->exz, h->enx, h->eny, h->enz, nx, ny, nz), cut);
   return h->sum;
@@ -200,7 +206,7 @@ inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8
     u1 &= xu > v.u1 * h + margin;
     v0 &= xv < v.v0 * h - margin;
     v1 &= xv > v.v1 * h + margin;
-    if (!any(u0 | u1 | v0 | v1)) break;
+    if (!pn_any(u0 | u1 | v0 | v1)) break;
   }
   return u0 | u1 | v0 | v1;
 }
@@ -752,7 +758,7 @@ inline float8 edge_point8(float8 a, float8 b, float8 t) {
 float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                           float8 lo, float8 hi, int8 on, int owner, float8 nx, float8 ny, float8 nz,
                           const Contours8* cs) {
-  if (!any(on)) return 0.0f;
+  if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
@@ -760,10 +766,10 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
-    for (int k = cs->first[v]; k < cs->first[v + 1] && any(covers); ++k) {
+    for (int k = cs->first[v]; k < cs->first[v + 1] && pn_any(covers); ++k) {
       const ContourEdge8* e = &cs->e[k];
       int8 use = covers & e->on & ((e->mx != 0.0f) | (e->my != 0.0f) | (e->mz != 0.0f));
-      if (!any(use)) continue;
+      if (!pn_any(use)) continue;
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
       float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
       int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
@@ -784,15 +790,15 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
     int8 valid = j < 0 ? on : cov[j];
     valid &= (st >= lo) & (st < hi);
     float8 end = hi;
-    for (int w = 0; w < cs->na && any(valid); ++w) {
+    for (int w = 0; w < cs->na && pn_any(valid); ++w) {
       valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
       end = select(end, fmin(end, c0[w]), cov[w] & (c0[w] > st));
     }
-    for (int i = 0; i <= j && any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
+    for (int i = 0; i <= j && pn_any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
     starts[j + 1] = st;
     kept[j + 1] = valid;
     valid &= end > st;
-    if (!any(valid)) continue;
+    if (!pn_any(valid)) continue;
     float8 term = edge_term8(edge_point8(ax, bx, st), edge_point8(ay, by, st),
                              edge_point8(az, bz, st), edge_point8(ax, bx, end),
                              edge_point8(ay, by, end), edge_point8(az, bz, end), nx, ny, nz);
@@ -822,7 +828,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     sx[i] = q.x - px;
     sy[i] = q.y - py;
     sz[i] = q.z - pz;
-    if (any(view.use)) {
+    if (pn_any(view.use)) {
       float8 cx, cy, cz;
       aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
       sx[i] = select(sx[i], cx, view.use);
@@ -838,7 +844,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   int8 lanes = asked &
                (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
                (rise > PN_EPS_REL);
-  if (!any(lanes)) return 0.0f;
+  if (!pn_any(lanes)) return 0.0f;
   /* Side planes of S': the face's edges, and the horizon where it cuts the face. */
   float8 smx[PN_VEC_SOURCE], smy[PN_VEC_SOURCE], smz[PN_VEC_SOURCE];
   float8 hx0 = 0.0f, hy0 = 0.0f, hz0 = 0.0f, hx1 = 0.0f, hy1 = 0.0f, hz1 = 0.0f; /* the chord */
@@ -862,7 +868,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   }
   int8 cut = has_exit & has_entry;
   float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
-  if (any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+  if (pn_any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
 
   /* The active occluders and their edges. */
   Contours8 cs;
@@ -873,24 +879,24 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
     int8 act = lanes & (own != (int8)(o.solid));
     if (o.behindAperture) act &= ~view.use;
-    for (int j = 0; j < o.separatingCount && any(act); ++j) {
+    for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
       float4 pl = planes[o.firstSeparating + j];
       act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
     }
-    for (int j = 0; j < o.penumbraCount && any(act); ++j) {
+    for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
       float4 pl = planes[o.firstPenumbra + j];
       act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
     }
-    if (!any(act)) continue;
+    if (!pn_any(act)) continue;
     /* The bounding sphere against the pyramid P + cone(S'). */
     float8 cx = o.bound.x - px, cy = o.bound.y - py, cz = o.bound.z - pz;
     act &= (nx * cx + ny * cy + nz * cz) >= -o.bound.w;
-    for (int j = 0; j < m && any(act); ++j)
+    for (int j = 0; j < m && pn_any(act); ++j)
       act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
-    if (any(act & view.use))
+    if (pn_any(act & view.use))
       act &= ~(view.use &
                misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
-    if (!any(act)) continue;
+    if (!pn_any(act)) continue;
     if (o.planeCount > PN_VEC_FACES || cs.na == PN_VEC_OCCLUDERS ||
         cs.first[cs.na] + o.edgeCount > PN_VEC_EDGES) {
       *rest |= act;
@@ -905,13 +911,13 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     }
     *rest |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
     act &= any_front;
-    if (!any(act)) continue;
+    if (!pn_any(act)) continue;
     int c = cs.first[cs.na];
     for (int k = 0; k < o.edgeCount; ++k) {
       int4 ed = edges[o.firstEdge + k];
       int8 lf = front[ed.z], rf = front[ed.w];
       int8 on = act & (lf ^ rf);
-      if (!any(on)) continue;
+      if (!pn_any(on)) continue;
       float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
       float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
       float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
@@ -949,15 +955,15 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
       const ContourEdge8* e = &cs.e[k];
       int8 on = lanes & e->on;
-      if (!any(on)) continue;
+      if (!pn_any(on)) continue;
       float8 la = sqrt(e->ax * e->ax + e->ay * e->ay + e->az * e->az);
       float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
       float8 t0 = 0.0f, t1 = 1.0f;
-      for (int i = 0; i <= m && any(on); ++i) {
+      for (int i = 0; i <= m && pn_any(on); ++i) {
         float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
         int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
         if (i == m) use &= cut;
-        if (!any(use)) continue;
+        if (!pn_any(use)) continue;
         float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
         float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
@@ -997,22 +1003,22 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
     int8 inside = own != (int8)(o.solid);
     if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (use_volumes) {
-      for (int j = 0; j < o.penumbraCount && any(inside); ++j) {
+      for (int j = 0; j < o.penumbraCount && pn_any(inside); ++j) {
         float4 pl = planes[o.firstPenumbra + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
-      if (!any(inside)) continue;
+      if (!pn_any(inside)) continue;
       /* The volume is the occluder's against the whole face; lanes that see only a rectangle of
        * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
-      if (any(inside & aperture)) {
+      if (pn_any(inside & aperture)) {
         inside &= ~(aperture &
                     misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
-        if (!any(inside)) continue;
+        if (!pn_any(inside)) continue;
       }
       t.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
-      for (int j = 0; j < o.umbraCount && any(hidden); ++j) {
+      for (int j = 0; j < o.umbraCount && pn_any(hidden); ++j) {
         float4 pl = planes[o.firstUmbra + j];
         hidden &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
       }
@@ -1085,7 +1091,7 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
       if (!all(view.use)) e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
-      if (any(view.use & ~dark))
+      if (pn_any(view.use & ~dark))
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
@@ -1096,13 +1102,13 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
       int8 scalar_lanes = t.shaded;
-      if ((use_volumes & 2) && any(t.shaded)) {
+      if ((use_volumes & 2) && pn_any(t.shaded)) {
         float8 e_pen =
             penumbra_face8(px, py, pz, nx, ny, nz, own, t.shaded, face, pf, candidates, view, ap,
                            vertices, occluders, planes, edges, overts, eps_length, &scalar_lanes);
         e_face = select(e_face, e_pen, t.shaded & ~scalar_lanes);
       }
-      if (any(scalar_lanes)) {
+      if (pn_any(scalar_lanes)) {
         float lane_e[PN_LANES];
         int lane_shaded[PN_LANES];
         vstore8(e_face, 0, lane_e);
@@ -1110,7 +1116,7 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
         int lane_ap[PN_LANES];
         float lane_cx[4][PN_LANES], lane_cy[4][PN_LANES], lane_cz[4][PN_LANES];
         vstore8(view.use, 0, lane_ap);
-        if (any(view.use & scalar_lanes))
+        if (pn_any(view.use & scalar_lanes))
           for (int i = 0; i < 4; ++i) {
             float8 cx, cy, cz;
             aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
