@@ -28,9 +28,9 @@ BoundingBox boxOf(std::span<const SamplePoint> points, std::size_t first, std::s
   return box;
 }
 
+// `emission` is the face's plane, computed once per face (ConvexPolygon::plane() is a Newell sum).
 FaceClass patchClass(std::span<const SamplePoint> points, std::size_t first,
-                     const EmittingFaceShadows& face) {
-  const Plane emission = face.face.plane();
+                     const EmittingFaceShadows& face, const Plane& emission) {
   bool allC = true, allA = true;
   for (std::size_t i = first; i < first + PN_LANES; ++i) {
     const SamplePoint& p = pointAt(points, i);
@@ -79,6 +79,8 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
     superCandidates[sf] =
         candidatesForBox(face, boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin);
   });
+  std::vector<Plane> emission(faceCount);
+  for (std::size_t f = 0; f < faceCount; ++f) emission[f] = shadows.faces[f].face.plane();
   std::vector<std::vector<cl_int>> groupCandidates(groups);
   tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t g) {
     const std::size_t firstItem = g * kItemsPerGroup;
@@ -94,7 +96,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
           face, groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f], margin);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
-        const FaceClass c = patchClass(points, w * PN_LANES, face);
+        const FaceClass c = patchClass(points, w * PN_LANES, face, emission[f]);
         entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
         if (c == FaceClass::C || near.empty()) continue;
         for (int k : candidatesForBox(face, itemBoxes[w - firstItem], near, margin))
