@@ -707,13 +707,16 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
  *    regions cover: a visible piece starts at lo or at the end of a covering interval that no
  *    other interval covers, and ends at the next interval's start or hi; each piece is one
  *    float8 edge term for the lanes that have it.
- * Lanes this path does not take (a solid touching P, more occluders or edges than it holds, an
- * occluder with more faces than it tracks) are returned in `rest` for the scalar path. */
+ * Lanes this path does not take (a solid touching P, an occluder with more faces than it tracks)
+ * are returned in `scalar` for the scalar path; lanes whose occluders do not fit beside the other
+ * lanes' (more occluders or edges than it holds) in `rest`: the kernel calls it again for those
+ * lanes alone, and gives them to the scalar path when that does not help. */
 
-#define PN_VEC_OCCLUDERS 8 /* active occluders per work-item and face */
-#define PN_VEC_EDGES 96    /* their edges in all */
-#define PN_VEC_FACES 16    /* faces of one occluder */
-#define PN_VEC_SOURCE 8    /* vertices of the face */
+#define PN_VEC_OCCLUDERS 16 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 96     /* their edges in all */
+#define PN_VEC_FACES 16     /* faces of one occluder */
+#define PN_VEC_SOURCE 8     /* vertices of the face */
+#define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
 
 typedef struct {
   float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
@@ -807,18 +810,20 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   return sum;
 }
 
-/* E of the face at the lanes in `asked` (others 0), and in *rest the lanes left to the scalar
- * path. */
+/* E of the face at the lanes in `asked` (others 0). Left out: in *rest the lanes whose occluders
+ * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
+ * those this path cannot take. */
 float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
                       int8 asked, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
                       ApertureView8 view, PnAperture ap, __global const float4* vertices,
                       __global const PnOccluder* occluders, __global const float4* planes,
                       __global const int4* edges, __global const float4* overts, float eps_length,
-                      int8* rest) {
+                      int8* rest, int8* scalar) {
   *rest = 0;
+  *scalar = 0;
   const int m = face.vertexCount;
   if (m > PN_VEC_SOURCE) {
-    *rest = asked;
+    *scalar = asked;
     return 0.0f;
   }
   /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
@@ -877,7 +882,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
-    int8 act = lanes & (own != (int8)(o.solid));
+    int8 act = lanes & ~(*rest | *scalar) & (own != (int8)(o.solid)); /* left: not this call's */
     if (o.behindAperture) act &= ~view.use;
     for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
       float4 pl = planes[o.firstSeparating + j];
@@ -897,8 +902,11 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       act &= ~(view.use &
                misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
     if (!pn_any(act)) continue;
-    if (o.planeCount > PN_VEC_FACES || cs.na == PN_VEC_OCCLUDERS ||
-        cs.first[cs.na] + o.edgeCount > PN_VEC_EDGES) {
+    if (o.planeCount > PN_VEC_FACES) {
+      *scalar |= act;
+      continue;
+    }
+    if (cs.na == PN_VEC_OCCLUDERS) {
       *rest |= act;
       continue;
     }
@@ -909,15 +917,21 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
       any_front |= front[j];
     }
-    *rest |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
+    *scalar |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
     act &= any_front;
     if (!pn_any(act)) continue;
+    /* Only the edges on some lane's contour are kept (a box has 12 edges, 4 to 6 on a contour). */
     int c = cs.first[cs.na];
+    bool full = false;
     for (int k = 0; k < o.edgeCount; ++k) {
       int4 ed = edges[o.firstEdge + k];
       int8 lf = front[ed.z], rf = front[ed.w];
       int8 on = act & (lf ^ rf);
       if (!pn_any(on)) continue;
+      if (c == PN_VEC_EDGES) {
+        full = true;
+        break;
+      }
       float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
       float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
       float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
@@ -932,11 +946,15 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &e->mx, &e->my, &e->mz);
       e->on = on;
     }
+    if (full) { /* this occluder's edges do not fit: dropped, its lanes left for another call */
+      *rest |= act;
+      continue;
+    }
     cs.act[cs.na] = act;
     ++cs.na;
     cs.first[cs.na] = c;
   }
-  lanes &= ~*rest;
+  lanes &= ~(*rest | *scalar);
 
   float8 sum = 0.0f;
   /* (a) The source's edges above the horizon, and the chord. */
@@ -1102,11 +1120,22 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
       int8 scalar_lanes = t.shaded;
-      if ((use_volumes & 2) && pn_any(t.shaded)) {
-        float8 e_pen =
-            penumbra_face8(px, py, pz, nx, ny, nz, own, t.shaded, face, pf, candidates, view, ap,
-                           vertices, occluders, planes, edges, overts, eps_length, &scalar_lanes);
-        e_face = select(e_face, e_pen, t.shaded & ~scalar_lanes);
+      /* The eight-lane path; the lanes whose occluders it could not hold beside the others' get
+       * another call among themselves, whose union of occluders is smaller, while that helps. */
+      if (use_volumes & 2) {
+        int8 todo = t.shaded;
+        scalar_lanes = 0;
+        for (int pass = 0; pass < PN_VEC_PASSES && pn_any(todo); ++pass) {
+          int8 asked = todo, scalar;
+          float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, candidates,
+                                        view, ap, vertices, occluders, planes, edges, overts,
+                                        eps_length, &todo, &scalar);
+          scalar_lanes |= scalar;
+          int8 done = asked & ~(todo | scalar);
+          e_face = select(e_face, e_pen, done);
+          if (!pn_any(done)) break; /* no progress: what is left goes scalar */
+        }
+        scalar_lanes |= todo;
       }
       if (pn_any(scalar_lanes)) {
         float lane_e[PN_LANES];
