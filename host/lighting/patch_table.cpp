@@ -41,6 +41,25 @@ FaceClass patchClass(std::span<const SamplePoint> points, std::size_t first,
   return allC ? FaceClass::C : allA ? FaceClass::A : FaceClass::B;
 }
 
+// candidatesForBox (shadow/receiver_candidates.hpp) on the flattened volumes, the same
+// arithmetic: the casters among `among` whose grown penumbra volume may meet the box, into
+// `found` (cleared first).
+void boxCandidates(const FaceVolumes& volumes, const BoundingBox& box, std::span<const int> among,
+                   double margin, std::vector<int>& found) {
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const Vec3 half = 0.5 * (box.hi - box.lo);
+  found.clear();
+  for (int k : among) {
+    bool meets = true;
+    for (std::size_t j = volumes.first[k]; j < volumes.first[k + 1] && meets; ++j) {
+      const Plane& plane = volumes.planes[j];
+      // The box corner deepest inside the half-space.
+      meets = !(plane.signedDistance(centre) - plane.normal.cwiseAbs().dot(half) > margin);
+    }
+    if (meets) found.push_back(k);
+  }
+}
+
 int kernelClass(FaceClass c) {
   switch (c) {
     case FaceClass::A:
@@ -55,9 +74,22 @@ int kernelClass(FaceClass c) {
 
 }  // namespace
 
-PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packed,
-                           std::span<const SamplePoint> points, std::size_t workItems, bool culling,
-                           double margin) {
+std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows) {
+  std::vector<FaceVolumes> all(shadows.faces.size());
+  for (std::size_t f = 0; f < all.size(); ++f) {
+    FaceVolumes& v = all[f];
+    v.first.push_back(0);
+    for (const ShadowCaster& caster : shadows.faces[f].casters) {
+      v.planes.insert(v.planes.end(), caster.volume.penumbra.begin(), caster.volume.penumbra.end());
+      v.first.push_back(v.planes.size());
+    }
+  }
+  return all;
+}
+
+PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
+                           const KernelScene& packed, std::span<const SamplePoint> points,
+                           std::size_t workItems, bool culling, double margin) {
   const std::size_t faceCount = shadows.faces.size();
   PatchTable table;
   table.entries.resize(workItems * faceCount);
@@ -73,11 +105,11 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
   tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
-    const EmittingFaceShadows& face = shadows.faces[sf % faceCount];
-    std::vector<int> all(face.casters.size());
+    const std::size_t f = sf % faceCount;
+    std::vector<int> all(shadows.faces[f].casters.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    superCandidates[sf] =
-        candidatesForBox(face, boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin);
+    boxCandidates(volumes[f], boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin,
+                  superCandidates[sf]);
   });
   std::vector<Plane> emission(faceCount);
   for (std::size_t f = 0; f < faceCount; ++f) emission[f] = shadows.faces[f].face.plane();
@@ -90,17 +122,18 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
     std::vector<BoundingBox> itemBoxes(items);
     for (std::size_t w = 0; w < items; ++w)
       itemBoxes[w] = boxOf(points, (firstItem + w) * PN_LANES, PN_LANES);
+    std::vector<int> near, found;
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
-      const std::vector<int> near = candidatesForBox(
-          face, groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f], margin);
+      boxCandidates(volumes[f], groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f],
+                    margin, near);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
         const FaceClass c = patchClass(points, w * PN_LANES, face, emission[f]);
         entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
         if (c == FaceClass::C || near.empty()) continue;
-        for (int k : candidatesForBox(face, itemBoxes[w - firstItem], near, margin))
-          list.push_back(packed.faces[f].firstOccluder + k);
+        boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
+        for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
       }
     }
