@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
@@ -149,7 +148,7 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
   // The plain path (the foundation's) takes the points as given: its work per point does not
   // depend on the point's neighbours.
-  if (!state_->options.culling || points.size() <= PN_LANES || std::getenv("PN_NO_MORTON"))
+  if (!state_->options.culling || points.size() <= PN_LANES)
     return evaluateInOrder(points, bySource);
   const std::vector<std::size_t> order = mortonOrder(points);
   std::vector<SamplePoint> sorted(points.size());
