@@ -712,20 +712,38 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
  * lanes' (more occluders or edges than it holds) in `rest`: the kernel calls it again for those
  * lanes alone, and gives them to the scalar path when that does not help. */
 
-#define PN_VEC_OCCLUDERS 16 /* active occluders per work-item and face */
-#define PN_VEC_EDGES 96     /* their edges in all */
+#define PN_VEC_OCCLUDERS 32 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 192    /* their edges in all */
 #define PN_VEC_FACES 16     /* faces of one occluder */
 #define PN_VEC_SOURCE 8     /* vertices of the face */
 #define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
 
+/* An active occluder's edge in two parts: its side plane, which every other region's edges are
+ * tested against (the hot loop of visible_edge_term8, so kept compact), and its ends. */
+typedef struct {
+  float8 mx, my, mz; /* unit side-plane normal along cross(a, b); 0: none */
+  int8 on;           /* lanes where it is a contour edge with a side plane */
+} EdgePlane8;
+
 typedef struct {
   float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
-  float8 mx, my, mz;             /* unit side-plane normal along cross(a, b); 0: none */
   int8 on;                       /* lanes where it is a contour edge of the occluder */
 } ContourEdge8;
 
+/* The cone of directions from P to an occluder's bounding sphere: unit axis u and the sine and
+ * cosine of its half-angle, grown by PN_VEC_CONE_MARGIN (2 and -2 where P is inside the
+ * sphere). An edge whose great circle, or whose arc, stays outside it cannot be covered by the
+ * occluder, which visible_edge_term8 then skips without walking its side planes. */
 typedef struct {
+  float8 ux, uy, uz, sin_a, cos_a;
+} BoundCone8;
+
+#define PN_VEC_CONE_MARGIN 1e-3f
+
+typedef struct {
+  EdgePlane8 p[PN_VEC_EDGES];
   ContourEdge8 e[PN_VEC_EDGES];
+  BoundCone8 cone[PN_VEC_OCCLUDERS];
   int8 act[PN_VEC_OCCLUDERS]; /* the lanes each occluder is active in */
   int first[PN_VEC_OCCLUDERS + 1];
   int na;
@@ -764,14 +782,33 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  /* For the bounding-cone test: the unit normal of the edge's great circle, the unit ends and,
+   * at each end, the circle's tangent pointing into the arc. Where the edge's line passes near P
+   * (no circle) the test rejects nothing. */
+  float8 lm = sqrt(mex * mex + mey * mey + mez * mez);
+  int8 arc = lm > PN_EPS_REL * la * lb;
+  float8 gx = mex / lm, gy = mey / lm, gz = mez / lm;
+  float8 aux = ax / la, auy = ay / la, auz = az / la, bux = bx / lb, buy = by / lb, buz = bz / lb;
+  float8 tax = gy * auz - gz * auy, tay = gz * aux - gx * auz, taz = gx * auy - gy * aux;
+  float8 tbx = buy * gz - buz * gy, tby = buz * gx - bux * gz, tbz = bux * gy - buy * gx;
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
+    if (pn_any(covers)) {
+      const BoundCone8* k = &cs->cone[v];
+      float8 d = k->ux * gx + k->uy * gy + k->uz * gz;
+      float8 ea = k->ux * aux + k->uy * auy + k->uz * auz;
+      float8 eb = k->ux * bux + k->uy * buy + k->uz * buz;
+      int8 inside_arc = (k->ux * tax + k->uy * tay + k->uz * taz >= 0.0f) &
+                        (k->ux * tbx + k->uy * tby + k->uz * tbz >= 0.0f);
+      int8 misses = (fabs(d) > k->sin_a) | ((ea < k->cos_a) & (eb < k->cos_a) & ~inside_arc);
+      covers &= ~(arc & misses);
+    }
     for (int k = cs->first[v]; k < cs->first[v + 1] && pn_any(covers); ++k) {
-      const ContourEdge8* e = &cs->e[k];
-      int8 use = covers & e->on & ((e->mx != 0.0f) | (e->my != 0.0f) | (e->mz != 0.0f));
+      const EdgePlane8* e = &cs->p[k];
+      int8 use = covers & e->on;
       if (!pn_any(use)) continue;
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
       float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
@@ -935,6 +972,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
       float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
       float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
+      EdgePlane8* ep = &cs.p[c];
       ContourEdge8* e = &cs.e[c++];
       /* run as the face that does not see P does (contour_edge) */
       e->ax = select(fx, gx, lf);
@@ -943,13 +981,24 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       e->bx = select(gx, fx, lf);
       e->by = select(gy, fy, lf);
       e->bz = select(gz, fz, lf);
-      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &e->mx, &e->my, &e->mz);
+      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &ep->mx, &ep->my, &ep->mz);
       e->on = on;
+      ep->on = on & ((ep->mx != 0.0f) | (ep->my != 0.0f) | (ep->mz != 0.0f));
     }
     if (full) { /* this occluder's edges do not fit: dropped, its lanes left for another call */
       *rest |= act;
       continue;
     }
+    BoundCone8* k = &cs.cone[cs.na];
+    float8 dist = sqrt(cx * cx + cy * cy + cz * cz);
+    float8 sin_a = o.bound.w / dist;
+    int8 outside = dist > o.bound.w;
+    k->ux = cx / dist;
+    k->uy = cy / dist;
+    k->uz = cz / dist;
+    k->sin_a = select((float8)(2.0f), sin_a + PN_VEC_CONE_MARGIN, outside);
+    k->cos_a = select((float8)(-2.0f), sqrt(fmax(1.0f - sin_a * sin_a, 0.0f)) - PN_VEC_CONE_MARGIN,
+                      outside);
     cs.act[cs.na] = act;
     ++cs.na;
     cs.first[cs.na] = c;
