@@ -96,6 +96,26 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   return h->sum;
 }
 
+/* The same for a patch of class A (the host found every lane sees the whole face above its
+ * horizon): no clipping, the face's own edges. */
+inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
+                          PnSourceFace face, __global const float4* vertices) {
+  const int m = face.vertexCount;
+  float4 q = vertices[face.firstVertex];
+  float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+  float8 sum = 0.0f;
+  for (int i = 0; i < m; ++i) {
+    q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
+    float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
+    sum += edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz);
+    ax = bx;
+    ay = by;
+    az = bz;
+  }
+  float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
+  return select((float8)(0.0f), sum, front > 0.0f);
+}
+
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                                PnSourceFace face, __global const float4* vertices) {
   HorizonSum8 h;
@@ -1157,7 +1177,10 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       }
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
-      if (!all(view.use)) e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+      if (!all(view.use))
+        e_face = pf.faceClass == PN_CLASS_A
+                     ? whole_face8(px, py, pz, nx, ny, nz, face, vertices)
+                     : unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
       if (pn_any(view.use & ~dark))
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
