@@ -96,8 +96,9 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   return h->sum;
 }
 
-/* The same for a patch of class A (the host found every lane sees the whole face above its
- * horizon): no clipping, the face's own edges. */
+/* The same where no lane's horizon cuts the face (every vertex at height >= 0, as
+ * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
+ * gives there. */
 inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                           PnSourceFace face, __global const float4* vertices) {
   const int m = face.vertexCount;
@@ -114,6 +115,17 @@ inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny,
   }
   float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
   return select((float8)(0.0f), sum, front > 0.0f);
+}
+
+inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
+                          PnSourceFace face, __global const float4* vertices) {
+  int8 below = 0;
+  for (int i = 0; i < face.vertexCount; ++i) {
+    float4 q = vertices[face.firstVertex + i];
+    float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+    below |= nx * ax + ny * ay + nz * az < 0.0f;
+  }
+  return pn_any(below);
 }
 
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
@@ -1178,9 +1190,9 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
       if (!all(view.use))
-        e_face = pf.faceClass == PN_CLASS_A
-                     ? whole_face8(px, py, pz, nx, ny, nz, face, vertices)
-                     : unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
+        e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, vertices)
+                     ? unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices)
+                     : whole_face8(px, py, pz, nx, ny, nz, face, vertices);
       if (pn_any(view.use & ~dark))
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);

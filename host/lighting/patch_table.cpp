@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "shadow/face_class.hpp"
 #include "shadow/receiver_candidates.hpp"
 
 namespace penumbra {
@@ -28,17 +27,19 @@ BoundingBox boxOf(std::span<const SamplePoint> points, std::size_t first, std::s
   return box;
 }
 
-// `emission` is the face's plane, computed once per face (ConvexPolygon::plane() is a Newell sum).
-FaceClass patchClass(std::span<const SamplePoint> points, std::size_t first,
-                     const EmittingFaceShadows& face, const Plane& emission) {
-  bool allC = true, allA = true;
+// Whether no point of the patch receives anything from the face: every point is of class C
+// (shadow/face_class.hpp: not strictly in front of the face's plane `emission`, or every vertex
+// on or below its horizon). The first point that sees a vertex answers, so this is about one
+// test per patch. Whether the horizon cuts the face (class A or B) the kernel finds for itself.
+bool patchSeesNothing(std::span<const SamplePoint> points, std::size_t first,
+                      const EmittingFaceShadows& face, const Plane& emission) {
   for (std::size_t i = first; i < first + PN_LANES; ++i) {
     const SamplePoint& p = pointAt(points, i);
-    const FaceClass c = classifyPoint(p.position, p.normal, face.face.vertices(), emission);
-    allC = allC && c == FaceClass::C;
-    allA = allA && c == FaceClass::A;
+    if (emission.signedDistance(p.position) <= 0.0) continue;
+    for (const Vec3& q : face.face.vertices())
+      if (p.normal.dot(q - p.position) > 0.0) return false;
   }
-  return allC ? FaceClass::C : allA ? FaceClass::A : FaceClass::B;
+  return true;
 }
 
 // candidatesForBox (shadow/receiver_candidates.hpp) on the flattened volumes, the same
@@ -58,18 +59,6 @@ void boxCandidates(const FaceVolumes& volumes, const BoundingBox& box, std::span
     }
     if (meets) found.push_back(k);
   }
-}
-
-int kernelClass(FaceClass c) {
-  switch (c) {
-    case FaceClass::A:
-      return PN_CLASS_A;
-    case FaceClass::B:
-      return PN_CLASS_B;
-    case FaceClass::C:
-      return PN_CLASS_C;
-  }
-  return PN_CLASS_B;
 }
 
 }  // namespace
@@ -129,9 +118,9 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
                     margin, near);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
-        const FaceClass c = patchClass(points, w * PN_LANES, face, emission[f]);
-        entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
-        if (c == FaceClass::C || near.empty()) continue;
+        const bool dark = patchSeesNothing(points, w * PN_LANES, face, emission[f]);
+        entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, dark ? PN_CLASS_C : PN_CLASS_B, 0};
+        if (dark || near.empty()) continue;
         boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
         for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
