@@ -814,21 +814,41 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
-  /* For the bounding-cone test: the unit normal of the edge's great circle, the unit ends and,
-   * at each end, the circle's tangent pointing into the arc. Where the edge's line passes near P
-   * (no circle) the test rejects nothing. */
-  float8 lm = sqrt(mex * mex + mey * mey + mez * mez);
-  int8 arc = lm > PN_EPS_REL * la * lb;
-  float8 gx = mex / lm, gy = mey / lm, gz = mez / lm;
-  float8 aux = ax / la, auy = ay / la, auz = az / la, bux = bx / lb, buy = by / lb, buz = bz / lb;
-  float8 tax = gy * auz - gz * auy, tay = gz * aux - gx * auz, taz = gx * auy - gy * aux;
-  float8 tbx = buy * gz - buz * gy, tby = buz * gx - bux * gz, tbz = bux * gy - buy * gx;
+  /* For the bounding-cone test, set up at the first occluder that needs it: the unit normal of
+   * the edge's great circle, the unit ends and, at each end, the circle's tangent pointing into
+   * the arc. Where the edge's line passes near P (no circle) the test rejects nothing. */
+  bool cone_ready = false;
+  int8 arc = 0;
+  float8 gx = 0.0f, gy = 0.0f, gz = 0.0f, aux = 0.0f, auy = 0.0f, auz = 0.0f, bux = 0.0f,
+         buy = 0.0f, buz = 0.0f, tax = 0.0f, tay = 0.0f, taz = 0.0f, tbx = 0.0f, tby = 0.0f,
+         tbz = 0.0f;
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
     if (pn_any(covers)) {
+      if (!cone_ready) {
+        cone_ready = true;
+        float8 lm = sqrt(mex * mex + mey * mey + mez * mez);
+        arc = lm > PN_EPS_REL * la * lb;
+        float8 im = 1.0f / lm, ia = 1.0f / la, ib = 1.0f / lb;
+        gx = mex * im;
+        gy = mey * im;
+        gz = mez * im;
+        aux = ax * ia;
+        auy = ay * ia;
+        auz = az * ia;
+        bux = bx * ib;
+        buy = by * ib;
+        buz = bz * ib;
+        tax = gy * auz - gz * auy;
+        tay = gz * aux - gx * auz;
+        taz = gx * auy - gy * aux;
+        tbx = buy * gz - buz * gy;
+        tby = buz * gx - bux * gz;
+        tbz = bux * gy - buy * gx;
+      }
       const BoundCone8* k = &cs->cone[v];
       float8 d = k->ux * gx + k->uy * gy + k->uz * gz;
       float8 ea = k->ux * aux + k->uy * auy + k->uz * auz;
