@@ -796,9 +796,12 @@ inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * `clip`; returns the lanes where the interval is not empty. */
 inline int8 clip_interval8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1) {
   int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
-  float8 t = f0 / (f0 - f1);
-  *t0 = select(*t0, fmax(*t0, t), clip & n0 & ~n1);
-  *t1 = select(*t1, fmin(*t1, t), clip & ~n0 & n1);
+  int8 enters = clip & n0 & ~n1, leaves = clip & ~n0 & n1;
+  if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */
+    float8 t = f0 / (f0 - f1);
+    *t0 = select(*t0, fmax(*t0, t), enters);
+    *t1 = select(*t1, fmin(*t1, t), leaves);
+  }
   return ~(clip & n0 & n1) & (*t1 > *t0);
 }
 
