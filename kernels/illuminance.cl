@@ -749,6 +749,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
 #define PN_VEC_FACES 16     /* faces of one occluder */
 #define PN_VEC_SOURCE 8     /* vertices of the face */
 #define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
+#define PN_VEC_MASKS 64     /* candidates whose shadow-test lane masks are kept for this path */
 
 /* An active occluder's edge in two parts: its side plane, which every other region's edges are
  * tested against (the hot loop of visible_edge_term8, so kept compact), and its ends. */
@@ -910,7 +911,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
                       ApertureView8 view, PnAperture ap, __global const float4* vertices,
                       __global const PnOccluder* occluders, __global const float4* planes,
                       __global const int4* edges, __global const float4* overts, float eps_length,
-                      int8* rest, int8* scalar) {
+                      const int8* inside, int8* rest, int8* scalar) {
   *rest = 0;
   *scalar = 0;
   const int m = face.vertexCount;
@@ -973,16 +974,23 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   cs.first[0] = 0;
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
+    int8 act = lanes & ~(*rest | *scalar); /* left: not this call's */
+    /* The first PN_VEC_MASKS candidates come with shadow_tests8's lanes (its own solid, behind
+     * the aperture, the penumbra volume, the aperture's pyramid): only what it does not test. */
+    if (i < PN_VEC_MASKS) act &= inside[i];
+    if (!pn_any(act)) continue;
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
-    int8 act = lanes & ~(*rest | *scalar) & (own != (int8)(o.solid)); /* left: not this call's */
-    if (o.behindAperture) act &= ~view.use;
+    if (i >= PN_VEC_MASKS) {
+      act &= own != (int8)(o.solid);
+      if (o.behindAperture) act &= ~view.use;
+      for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
+        float4 pl = planes[o.firstPenumbra + j];
+        act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
+      }
+    }
     for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
       float4 pl = planes[o.firstSeparating + j];
       act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
-    }
-    for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
-      float4 pl = planes[o.firstPenumbra + j];
-      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
     }
     if (!pn_any(act)) continue;
     /* The bounding sphere against the pyramid P + cone(S'). */
@@ -990,7 +998,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     act &= (nx * cx + ny * cy + nz * cz) >= -o.bound.w;
     for (int j = 0; j < m && pn_any(act); ++j)
       act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
-    if (pn_any(act & view.use))
+    if (i >= PN_VEC_MASKS && pn_any(act & view.use))
       act &= ~(view.use &
                misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
     if (!pn_any(act)) continue;
@@ -1114,7 +1122,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
                           PnPatchFace pf, __global const int* candidates, int use_volumes,
                           ApertureView8 view, PnAperture ap, __global const PnOccluder* occluders,
                           __global const float4* planes, __global const float4* overts,
-                          float eps_length) {
+                          float eps_length, int8* inside_out) {
   const int8 aperture = view.use;
   ShadowTests t;
   t.umbra = 0;
@@ -1125,6 +1133,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
     int8 inside = own != (int8)(o.solid);
     if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (use_volumes) {
+      if (i < PN_VEC_MASKS) inside_out[i] = 0;
       for (int j = 0; j < o.penumbraCount && pn_any(inside); ++j) {
         float4 pl = planes[o.firstPenumbra + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
@@ -1137,6 +1146,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
                     misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
         if (!pn_any(inside)) continue;
       }
+      if (i < PN_VEC_MASKS) inside_out[i] = inside;
       t.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
@@ -1220,8 +1230,9 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
+      int8 inside[PN_VEC_MASKS]; /* per candidate, the lanes in its penumbra volume */
       ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view, ap,
-                                    occluders, planes, overts, eps_length);
+                                    occluders, planes, overts, eps_length, inside);
       t.shaded &= ~dark;
       t.umbra |= dark;
       facing |= dark;
@@ -1236,7 +1247,7 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
           int8 asked = todo, scalar;
           float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, candidates,
                                         view, ap, vertices, occluders, planes, edges, overts,
-                                        eps_length, &todo, &scalar);
+                                        eps_length, inside, &todo, &scalar);
           scalar_lanes |= scalar;
           int8 done = asked & ~(todo | scalar);
           e_face = select(e_face, e_pen, done);
