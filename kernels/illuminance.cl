@@ -777,7 +777,9 @@ typedef struct {
   EdgePlane8 p[PN_VEC_EDGES];
   ContourEdge8 e[PN_VEC_EDGES];
   BoundCone8 cone[PN_VEC_OCCLUDERS];
-  int8 act[PN_VEC_OCCLUDERS]; /* the lanes each occluder is active in */
+  int8 act[PN_VEC_OCCLUDERS];   /* the lanes each occluder is active in */
+  int8 whole[PN_VEC_OCCLUDERS]; /* lanes where each of its contour edges has a side plane */
+  int occ[PN_VEC_OCCLUDERS];    /* its index among the occluders */
   int first[PN_VEC_OCCLUDERS + 1];
   int na;
 } Contours8;
@@ -1052,6 +1054,10 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       *rest |= act;
       continue;
     }
+    int8 whole = act;
+    for (int k = cs.first[cs.na]; k < c; ++k) whole &= ~(cs.e[k].on & ~cs.p[k].on);
+    cs.whole[cs.na] = whole;
+    cs.occ[cs.na] = occluder_index(i, pf, face, candidates);
     BoundCone8* k = &cs.cone[cs.na];
     float8 dist = sqrt(cx * cx + cy * cy + cz * cz);
     float8 sin_a = o.bound.w / dist;
@@ -1067,6 +1073,36 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     cs.first[cs.na] = c;
   }
   lanes &= ~(*rest | *scalar);
+
+  /* Occluders hidden behind another: where every vertex of u lies inside v's cone (inside each
+   * side plane of v's contour by more than eps_length), u's cone lies strictly inside v's, so u
+   * adds nothing to the union: it covers no edge v does not cover more, and its own edges are
+   * covered. Its lanes are dropped; the pieces, and so the sums, are the same without it. */
+  for (int u = 0; u < cs.na && cs.na > 1; ++u) {
+    PnOccluder ou = occluders[cs.occ[u]];
+    int8 hidden_all = 0;
+    for (int v = 0; v < cs.na && pn_any(cs.act[u] & ~hidden_all); ++v) {
+      if (v == u) continue;
+      int8 hidden = cs.act[u] & cs.act[v] & cs.whole[v] & ~hidden_all;
+      for (int k = cs.first[v]; k < cs.first[v + 1] && pn_any(hidden); ++k) {
+        const EdgePlane8* e = &cs.p[k];
+        if (!pn_any(hidden & e->on)) continue;
+        for (int q = 0; q < ou.vertexCount && pn_any(hidden); ++q) {
+          float4 x = overts[ou.firstVertex + q];
+          hidden &=
+              ~e->on | (e->mx * (x.x - px) + e->my * (x.y - py) + e->mz * (x.z - pz) > eps_length);
+        }
+      }
+      hidden_all |= hidden;
+    }
+    if (!pn_any(hidden_all)) continue;
+    cs.act[u] &= ~hidden_all; /* (a dropped u hides nothing itself) */
+    cs.whole[u] &= ~hidden_all;
+    for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
+      cs.p[k].on &= ~hidden_all;
+      cs.e[k].on &= ~hidden_all;
+    }
+  }
 
   float8 sum = 0.0f;
   /* (a) The source's edges above the horizon, and the chord. */
