@@ -17,6 +17,12 @@
 #error "the host passes -DPN_EPS_REL"
 #endif
 
+/* Whether any lane of a mask (lanes all ones or all zeros, as comparisons give) is set. PoCL's
+ * any() extracts the eight lanes one by one; a vector OR-reduction compiles to one vptest. */
+inline bool pn_any(int8 m) {
+  return __builtin_reduce_or(m) != 0;
+}
+
 /* ---------------------------------------------------------------------------------------------
  * Lambert's term of one edge, scalar and in eight lanes. a, b are vectors from P. */
 
@@ -84,10 +90,42 @@ inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float
 
 inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   int8 cut = h->has_exit & h->has_entry;
-  if (any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
+  if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
     h->sum += select((float8)(0.0f),
                      edge_term8(h->exx, h->exy, h->exz, h->enx, h->eny, h->enz, nx, ny, nz), cut);
   return h->sum;
+}
+
+/* The same where no lane's horizon cuts the face (every vertex at height >= 0, as
+ * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
+ * gives there. */
+inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
+                          PnSourceFace face, __global const float4* vertices) {
+  const int m = face.vertexCount;
+  float4 q = vertices[face.firstVertex];
+  float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+  float8 sum = 0.0f;
+  for (int i = 0; i < m; ++i) {
+    q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
+    float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
+    sum += edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz);
+    ax = bx;
+    ay = by;
+    az = bz;
+  }
+  float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
+  return select((float8)(0.0f), sum, front > 0.0f);
+}
+
+inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
+                          PnSourceFace face, __global const float4* vertices) {
+  int8 below = 0;
+  for (int i = 0; i < face.vertexCount; ++i) {
+    float4 q = vertices[face.firstVertex + i];
+    float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+    below |= nx * ax + ny * ay + nz * az < 0.0f;
+  }
+  return pn_any(below);
 }
 
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
@@ -200,7 +238,7 @@ inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8
     u1 &= xu > v.u1 * h + margin;
     v0 &= xv < v.v0 * h - margin;
     v1 &= xv > v.v1 * h + margin;
-    if (!any(u0 | u1 | v0 | v1)) break;
+    if (!pn_any(u0 | u1 | v0 | v1)) break;
   }
   return u0 | u1 | v0 | v1;
 }
@@ -701,23 +739,47 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
  *    regions cover: a visible piece starts at lo or at the end of a covering interval that no
  *    other interval covers, and ends at the next interval's start or hi; each piece is one
  *    float8 edge term for the lanes that have it.
- * Lanes this path does not take (a solid touching P, more occluders or edges than it holds, an
- * occluder with more faces than it tracks) are returned in `rest` for the scalar path. */
+ * Lanes this path does not take (a solid touching P, an occluder with more faces than it tracks)
+ * are returned in `scalar` for the scalar path; lanes whose occluders do not fit beside the other
+ * lanes' (more occluders or edges than it holds) in `rest`: the kernel calls it again for those
+ * lanes alone, and gives them to the scalar path when that does not help. */
 
-#define PN_VEC_OCCLUDERS 8 /* active occluders per work-item and face */
-#define PN_VEC_EDGES 96    /* their edges in all */
-#define PN_VEC_FACES 16    /* faces of one occluder */
-#define PN_VEC_SOURCE 8    /* vertices of the face */
+#define PN_VEC_OCCLUDERS 32 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 192    /* their edges in all */
+#define PN_VEC_FACES 16     /* faces of one occluder */
+#define PN_VEC_SOURCE 8     /* vertices of the face */
+#define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
+#define PN_VEC_MASKS 64     /* candidates whose shadow-test lane masks are kept for this path */
+
+/* An active occluder's edge in two parts: its side plane, which every other region's edges are
+ * tested against (the hot loop of visible_edge_term8, so kept compact), and its ends. */
+typedef struct {
+  float8 mx, my, mz; /* unit side-plane normal along cross(a, b); 0: none */
+  int8 on;           /* lanes where it is a contour edge with a side plane */
+} EdgePlane8;
 
 typedef struct {
   float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
-  float8 mx, my, mz;             /* unit side-plane normal along cross(a, b); 0: none */
   int8 on;                       /* lanes where it is a contour edge of the occluder */
 } ContourEdge8;
 
+/* The cone of directions from P to an occluder's bounding sphere: unit axis u and the sine and
+ * cosine of its half-angle, grown by PN_VEC_CONE_MARGIN (2 and -2 where P is inside the
+ * sphere). An edge whose great circle, or whose arc, stays outside it cannot be covered by the
+ * occluder, which visible_edge_term8 then skips without walking its side planes. */
 typedef struct {
+  float8 ux, uy, uz, sin_a, cos_a;
+} BoundCone8;
+
+#define PN_VEC_CONE_MARGIN 1e-3f
+
+typedef struct {
+  EdgePlane8 p[PN_VEC_EDGES];
   ContourEdge8 e[PN_VEC_EDGES];
-  int8 act[PN_VEC_OCCLUDERS]; /* the lanes each occluder is active in */
+  BoundCone8 cone[PN_VEC_OCCLUDERS];
+  int8 act[PN_VEC_OCCLUDERS];   /* the lanes each occluder is active in */
+  int8 whole[PN_VEC_OCCLUDERS]; /* lanes where each of its contour edges has a side plane */
+  int occ[PN_VEC_OCCLUDERS];    /* its index among the occluders */
   int first[PN_VEC_OCCLUDERS + 1];
   int na;
 } Contours8;
@@ -737,9 +799,12 @@ inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * `clip`; returns the lanes where the interval is not empty. */
 inline int8 clip_interval8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1) {
   int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
-  float8 t = f0 / (f0 - f1);
-  *t0 = select(*t0, fmax(*t0, t), clip & n0 & ~n1);
-  *t1 = select(*t1, fmin(*t1, t), clip & ~n0 & n1);
+  int8 enters = clip & n0 & ~n1, leaves = clip & ~n0 & n1;
+  if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */
+    float8 t = f0 / (f0 - f1);
+    *t0 = select(*t0, fmax(*t0, t), enters);
+    *t1 = select(*t1, fmin(*t1, t), leaves);
+  }
   return ~(clip & n0 & n1) & (*t1 > *t0);
 }
 
@@ -752,18 +817,57 @@ inline float8 edge_point8(float8 a, float8 b, float8 t) {
 float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                           float8 lo, float8 hi, int8 on, int owner, float8 nx, float8 ny, float8 nz,
                           const Contours8* cs) {
-  if (!any(on)) return 0.0f;
+  if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  /* For the bounding-cone test, set up at the first occluder that needs it: the unit normal of
+   * the edge's great circle, the unit ends and, at each end, the circle's tangent pointing into
+   * the arc. Where the edge's line passes near P (no circle) the test rejects nothing. */
+  bool cone_ready = false;
+  int8 arc = 0;
+  float8 gx = 0.0f, gy = 0.0f, gz = 0.0f, aux = 0.0f, auy = 0.0f, auz = 0.0f, bux = 0.0f,
+         buy = 0.0f, buz = 0.0f, tax = 0.0f, tay = 0.0f, taz = 0.0f, tbx = 0.0f, tby = 0.0f,
+         tbz = 0.0f;
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
-    for (int k = cs->first[v]; k < cs->first[v + 1] && any(covers); ++k) {
-      const ContourEdge8* e = &cs->e[k];
-      int8 use = covers & e->on & ((e->mx != 0.0f) | (e->my != 0.0f) | (e->mz != 0.0f));
-      if (!any(use)) continue;
+    if (pn_any(covers)) {
+      if (!cone_ready) {
+        cone_ready = true;
+        float8 lm = sqrt(mex * mex + mey * mey + mez * mez);
+        arc = lm > PN_EPS_REL * la * lb;
+        float8 im = 1.0f / lm, ia = 1.0f / la, ib = 1.0f / lb;
+        gx = mex * im;
+        gy = mey * im;
+        gz = mez * im;
+        aux = ax * ia;
+        auy = ay * ia;
+        auz = az * ia;
+        bux = bx * ib;
+        buy = by * ib;
+        buz = bz * ib;
+        tax = gy * auz - gz * auy;
+        tay = gz * aux - gx * auz;
+        taz = gx * auy - gy * aux;
+        tbx = buy * gz - buz * gy;
+        tby = buz * gx - bux * gz;
+        tbz = bux * gy - buy * gx;
+      }
+      const BoundCone8* k = &cs->cone[v];
+      float8 d = k->ux * gx + k->uy * gy + k->uz * gz;
+      float8 ea = k->ux * aux + k->uy * auy + k->uz * auz;
+      float8 eb = k->ux * bux + k->uy * buy + k->uz * buz;
+      int8 inside_arc = (k->ux * tax + k->uy * tay + k->uz * taz >= 0.0f) &
+                        (k->ux * tbx + k->uy * tby + k->uz * tbz >= 0.0f);
+      int8 misses = (fabs(d) > k->sin_a) | ((ea < k->cos_a) & (eb < k->cos_a) & ~inside_arc);
+      covers &= ~(arc & misses);
+    }
+    for (int k = cs->first[v]; k < cs->first[v + 1] && pn_any(covers); ++k) {
+      const EdgePlane8* e = &cs->p[k];
+      int8 use = covers & e->on;
+      if (!pn_any(use)) continue;
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
       float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
       int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
@@ -784,15 +888,15 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
     int8 valid = j < 0 ? on : cov[j];
     valid &= (st >= lo) & (st < hi);
     float8 end = hi;
-    for (int w = 0; w < cs->na && any(valid); ++w) {
+    for (int w = 0; w < cs->na && pn_any(valid); ++w) {
       valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
       end = select(end, fmin(end, c0[w]), cov[w] & (c0[w] > st));
     }
-    for (int i = 0; i <= j && any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
+    for (int i = 0; i <= j && pn_any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
     starts[j + 1] = st;
     kept[j + 1] = valid;
     valid &= end > st;
-    if (!any(valid)) continue;
+    if (!pn_any(valid)) continue;
     float8 term = edge_term8(edge_point8(ax, bx, st), edge_point8(ay, by, st),
                              edge_point8(az, bz, st), edge_point8(ax, bx, end),
                              edge_point8(ay, by, end), edge_point8(az, bz, end), nx, ny, nz);
@@ -801,18 +905,20 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   return sum;
 }
 
-/* E of the face at the lanes in `asked` (others 0), and in *rest the lanes left to the scalar
- * path. */
+/* E of the face at the lanes in `asked` (others 0). Left out: in *rest the lanes whose occluders
+ * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
+ * those this path cannot take. */
 float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
                       int8 asked, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
                       ApertureView8 view, PnAperture ap, __global const float4* vertices,
                       __global const PnOccluder* occluders, __global const float4* planes,
                       __global const int4* edges, __global const float4* overts, float eps_length,
-                      int8* rest) {
+                      const int8* inside, int8* rest, int8* scalar) {
   *rest = 0;
+  *scalar = 0;
   const int m = face.vertexCount;
   if (m > PN_VEC_SOURCE) {
-    *rest = asked;
+    *scalar = asked;
     return 0.0f;
   }
   /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
@@ -822,7 +928,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     sx[i] = q.x - px;
     sy[i] = q.y - py;
     sz[i] = q.z - pz;
-    if (any(view.use)) {
+    if (pn_any(view.use)) {
       float8 cx, cy, cz;
       aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);
       sx[i] = select(sx[i], cx, view.use);
@@ -838,7 +944,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   int8 lanes = asked &
                (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
                (rise > PN_EPS_REL);
-  if (!any(lanes)) return 0.0f;
+  if (!pn_any(lanes)) return 0.0f;
   /* Side planes of S': the face's edges, and the horizon where it cuts the face. */
   float8 smx[PN_VEC_SOURCE], smy[PN_VEC_SOURCE], smz[PN_VEC_SOURCE];
   float8 hx0 = 0.0f, hy0 = 0.0f, hz0 = 0.0f, hx1 = 0.0f, hy1 = 0.0f, hz1 = 0.0f; /* the chord */
@@ -862,7 +968,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   }
   int8 cut = has_exit & has_entry;
   float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
-  if (any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+  if (pn_any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
 
   /* The active occluders and their edges. */
   Contours8 cs;
@@ -870,29 +976,39 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   cs.first[0] = 0;
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
+    int8 act = lanes & ~(*rest | *scalar); /* left: not this call's */
+    /* The first PN_VEC_MASKS candidates come with shadow_tests8's lanes (its own solid, behind
+     * the aperture, the penumbra volume, the aperture's pyramid): only what it does not test. */
+    if (i < PN_VEC_MASKS) act &= inside[i];
+    if (!pn_any(act)) continue;
     PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
-    int8 act = lanes & (own != (int8)(o.solid));
-    if (o.behindAperture) act &= ~view.use;
-    for (int j = 0; j < o.separatingCount && any(act); ++j) {
+    if (i >= PN_VEC_MASKS) {
+      act &= own != (int8)(o.solid);
+      if (o.behindAperture) act &= ~view.use;
+      for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
+        float4 pl = planes[o.firstPenumbra + j];
+        act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
+      }
+    }
+    for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
       float4 pl = planes[o.firstSeparating + j];
       act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
     }
-    for (int j = 0; j < o.penumbraCount && any(act); ++j) {
-      float4 pl = planes[o.firstPenumbra + j];
-      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
-    }
-    if (!any(act)) continue;
+    if (!pn_any(act)) continue;
     /* The bounding sphere against the pyramid P + cone(S'). */
     float8 cx = o.bound.x - px, cy = o.bound.y - py, cz = o.bound.z - pz;
     act &= (nx * cx + ny * cy + nz * cz) >= -o.bound.w;
-    for (int j = 0; j < m && any(act); ++j)
+    for (int j = 0; j < m && pn_any(act); ++j)
       act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
-    if (any(act & view.use))
+    if (i >= PN_VEC_MASKS && pn_any(act & view.use))
       act &= ~(view.use &
                misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
-    if (!any(act)) continue;
-    if (o.planeCount > PN_VEC_FACES || cs.na == PN_VEC_OCCLUDERS ||
-        cs.first[cs.na] + o.edgeCount > PN_VEC_EDGES) {
+    if (!pn_any(act)) continue;
+    if (o.planeCount > PN_VEC_FACES) {
+      *scalar |= act;
+      continue;
+    }
+    if (cs.na == PN_VEC_OCCLUDERS) {
       *rest |= act;
       continue;
     }
@@ -903,18 +1019,25 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
       any_front |= front[j];
     }
-    *rest |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
+    *scalar |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
     act &= any_front;
-    if (!any(act)) continue;
+    if (!pn_any(act)) continue;
+    /* Only the edges on some lane's contour are kept (a box has 12 edges, 4 to 6 on a contour). */
     int c = cs.first[cs.na];
+    bool full = false;
     for (int k = 0; k < o.edgeCount; ++k) {
       int4 ed = edges[o.firstEdge + k];
       int8 lf = front[ed.z], rf = front[ed.w];
       int8 on = act & (lf ^ rf);
-      if (!any(on)) continue;
+      if (!pn_any(on)) continue;
+      if (c == PN_VEC_EDGES) {
+        full = true;
+        break;
+      }
       float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
       float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
       float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
+      EdgePlane8* ep = &cs.p[c];
       ContourEdge8* e = &cs.e[c++];
       /* run as the face that does not see P does (contour_edge) */
       e->ax = select(fx, gx, lf);
@@ -923,14 +1046,63 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       e->bx = select(gx, fx, lf);
       e->by = select(gy, fy, lf);
       e->bz = select(gz, fz, lf);
-      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &e->mx, &e->my, &e->mz);
+      side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &ep->mx, &ep->my, &ep->mz);
       e->on = on;
+      ep->on = on & ((ep->mx != 0.0f) | (ep->my != 0.0f) | (ep->mz != 0.0f));
     }
+    if (full) { /* this occluder's edges do not fit: dropped, its lanes left for another call */
+      *rest |= act;
+      continue;
+    }
+    int8 whole = act;
+    for (int k = cs.first[cs.na]; k < c; ++k) whole &= ~(cs.e[k].on & ~cs.p[k].on);
+    cs.whole[cs.na] = whole;
+    cs.occ[cs.na] = occluder_index(i, pf, face, candidates);
+    BoundCone8* k = &cs.cone[cs.na];
+    float8 dist = sqrt(cx * cx + cy * cy + cz * cz);
+    float8 sin_a = o.bound.w / dist;
+    int8 outside = dist > o.bound.w;
+    k->ux = cx / dist;
+    k->uy = cy / dist;
+    k->uz = cz / dist;
+    k->sin_a = select((float8)(2.0f), sin_a + PN_VEC_CONE_MARGIN, outside);
+    k->cos_a = select((float8)(-2.0f), sqrt(fmax(1.0f - sin_a * sin_a, 0.0f)) - PN_VEC_CONE_MARGIN,
+                      outside);
     cs.act[cs.na] = act;
     ++cs.na;
     cs.first[cs.na] = c;
   }
-  lanes &= ~*rest;
+  lanes &= ~(*rest | *scalar);
+
+  /* Occluders hidden behind another: where every vertex of u lies inside v's cone (inside each
+   * side plane of v's contour by more than eps_length), u's cone lies strictly inside v's, so u
+   * adds nothing to the union: it covers no edge v does not cover more, and its own edges are
+   * covered. Its lanes are dropped; the pieces, and so the sums, are the same without it. */
+  for (int u = 0; u < cs.na && cs.na > 1; ++u) {
+    PnOccluder ou = occluders[cs.occ[u]];
+    int8 hidden_all = 0;
+    for (int v = 0; v < cs.na && pn_any(cs.act[u] & ~hidden_all); ++v) {
+      if (v == u) continue;
+      int8 hidden = cs.act[u] & cs.act[v] & cs.whole[v] & ~hidden_all;
+      for (int k = cs.first[v]; k < cs.first[v + 1] && pn_any(hidden); ++k) {
+        const EdgePlane8* e = &cs.p[k];
+        if (!pn_any(hidden & e->on)) continue;
+        for (int q = 0; q < ou.vertexCount && pn_any(hidden); ++q) {
+          float4 x = overts[ou.firstVertex + q];
+          hidden &=
+              ~e->on | (e->mx * (x.x - px) + e->my * (x.y - py) + e->mz * (x.z - pz) > eps_length);
+        }
+      }
+      hidden_all |= hidden;
+    }
+    if (!pn_any(hidden_all)) continue;
+    cs.act[u] &= ~hidden_all; /* (a dropped u hides nothing itself) */
+    cs.whole[u] &= ~hidden_all;
+    for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
+      cs.p[k].on &= ~hidden_all;
+      cs.e[k].on &= ~hidden_all;
+    }
+  }
 
   float8 sum = 0.0f;
   /* (a) The source's edges above the horizon, and the chord. */
@@ -949,15 +1121,15 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
       const ContourEdge8* e = &cs.e[k];
       int8 on = lanes & e->on;
-      if (!any(on)) continue;
+      if (!pn_any(on)) continue;
       float8 la = sqrt(e->ax * e->ax + e->ay * e->ay + e->az * e->az);
       float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
       float8 t0 = 0.0f, t1 = 1.0f;
-      for (int i = 0; i <= m && any(on); ++i) {
+      for (int i = 0; i <= m && pn_any(on); ++i) {
         float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
         int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
         if (i == m) use &= cut;
-        if (!any(use)) continue;
+        if (!pn_any(use)) continue;
         float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
         float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
@@ -986,7 +1158,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
                           PnPatchFace pf, __global const int* candidates, int use_volumes,
                           ApertureView8 view, PnAperture ap, __global const PnOccluder* occluders,
                           __global const float4* planes, __global const float4* overts,
-                          float eps_length) {
+                          float eps_length, int8* inside_out) {
   const int8 aperture = view.use;
   ShadowTests t;
   t.umbra = 0;
@@ -997,22 +1169,24 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
     int8 inside = own != (int8)(o.solid);
     if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (use_volumes) {
-      for (int j = 0; j < o.penumbraCount && any(inside); ++j) {
+      if (i < PN_VEC_MASKS) inside_out[i] = 0;
+      for (int j = 0; j < o.penumbraCount && pn_any(inside); ++j) {
         float4 pl = planes[o.firstPenumbra + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
-      if (!any(inside)) continue;
+      if (!pn_any(inside)) continue;
       /* The volume is the occluder's against the whole face; lanes that see only a rectangle of
        * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
-      if (any(inside & aperture)) {
+      if (pn_any(inside & aperture)) {
         inside &= ~(aperture &
                     misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
-        if (!any(inside)) continue;
+        if (!pn_any(inside)) continue;
       }
+      if (i < PN_VEC_MASKS) inside_out[i] = inside;
       t.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
-      for (int j = 0; j < o.umbraCount && any(hidden); ++j) {
+      for (int j = 0; j < o.umbraCount && pn_any(hidden); ++j) {
         float4 pl = planes[o.firstUmbra + j];
         hidden &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
       }
@@ -1084,25 +1258,40 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       }
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
-      if (!all(view.use)) e_face = unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices);
-      if (any(view.use & ~dark))
+      if (!all(view.use))
+        e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, vertices)
+                     ? unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices)
+                     : whole_face8(px, py, pz, nx, ny, nz, face, vertices);
+      if (pn_any(view.use & ~dark))
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
+      int8 inside[PN_VEC_MASKS]; /* per candidate, the lanes in its penumbra volume */
       ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view, ap,
-                                    occluders, planes, overts, eps_length);
+                                    occluders, planes, overts, eps_length, inside);
       t.shaded &= ~dark;
       t.umbra |= dark;
       facing |= dark;
       e_face = select(e_face, (float8)(0.0f), t.umbra);
       int8 scalar_lanes = t.shaded;
-      if ((use_volumes & 2) && any(t.shaded)) {
-        float8 e_pen =
-            penumbra_face8(px, py, pz, nx, ny, nz, own, t.shaded, face, pf, candidates, view, ap,
-                           vertices, occluders, planes, edges, overts, eps_length, &scalar_lanes);
-        e_face = select(e_face, e_pen, t.shaded & ~scalar_lanes);
+      /* The eight-lane path; the lanes whose occluders it could not hold beside the others' get
+       * another call among themselves, whose union of occluders is smaller, while that helps. */
+      if (use_volumes & 2) {
+        int8 todo = t.shaded;
+        scalar_lanes = 0;
+        for (int pass = 0; pass < PN_VEC_PASSES && pn_any(todo); ++pass) {
+          int8 asked = todo, scalar;
+          float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, candidates,
+                                        view, ap, vertices, occluders, planes, edges, overts,
+                                        eps_length, inside, &todo, &scalar);
+          scalar_lanes |= scalar;
+          int8 done = asked & ~(todo | scalar);
+          e_face = select(e_face, e_pen, done);
+          if (!pn_any(done)) break; /* no progress: what is left goes scalar */
+        }
+        scalar_lanes |= todo;
       }
-      if (any(scalar_lanes)) {
+      if (pn_any(scalar_lanes)) {
         float lane_e[PN_LANES];
         int lane_shaded[PN_LANES];
         vstore8(e_face, 0, lane_e);
@@ -1110,7 +1299,7 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
         int lane_ap[PN_LANES];
         float lane_cx[4][PN_LANES], lane_cy[4][PN_LANES], lane_cz[4][PN_LANES];
         vstore8(view.use, 0, lane_ap);
-        if (any(view.use & scalar_lanes))
+        if (pn_any(view.use & scalar_lanes))
           for (int i = 0; i < 4; ++i) {
             float8 cx, cy, cz;
             aperture_corner8(view, ap, face.plane, i, &cx, &cy, &cz);

@@ -88,6 +88,8 @@ typedef struct {
 #define PN_CLASS_A 0 /* every point of the patch sees the whole face above its horizon */
 #define PN_CLASS_B 1 /* some point's horizon may cut the face */
 #define PN_CLASS_C 2 /* no point of the patch receives anything from the face */
+/* The host's patch table writes C or B only: whether a horizon cuts the face the kernel tests
+ * itself, in float, the way it clips (horizon_cuts8). */
 
 /* Something a camera ray can hit (kernels/visibility.cl). A solid is the intersection of its
  * planes' closed insides (n·x <= w), plane i being face i, whose face id is firstFaceId + i. A

@@ -2,7 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 #include "cl/buffer.hpp"
 #include "lighting/kernel_scene.hpp"
@@ -26,6 +29,7 @@ struct IlluminanceEngine::State {
   compute::Device* device = nullptr;
   EngineOptions options;
   SceneShadows shadows;
+  std::vector<FaceVolumes> volumes;  // flattenVolumes(shadows), for the patch tables
   KernelScene packed;
   compute::Program program;
   DeviceBuffer faces, apertures, sourceVertices, occluders, planes, edges, occluderVertices;
@@ -42,6 +46,7 @@ struct IlluminanceEngine::State {
   void upload(const Scene& scene) {
     compute::Device& d = *device;
     shadows = buildSceneShadows(scene);
+    volumes = flattenVolumes(shadows);
     packed = packScene(scene, shadows);
     if (!options.apertures)
       for (PnSourceFace& f : packed.faces) f.aperture = -1;
@@ -97,7 +102,79 @@ std::string kernelError(int bits, const SamplePoint& p) {
 
 }  // namespace
 
+namespace {
+
+// Spreads the low 21 bits of v to every third bit.
+std::uint64_t spreadBits(std::uint64_t v) {
+  v &= 0x1fffff;
+  v = (v | v << 32) & 0x1f00000000ffff;
+  v = (v | v << 16) & 0x1f0000ff0000ff;
+  v = (v | v << 8) & 0x100f00f00f00f00f;
+  v = (v | v << 4) & 0x10c30c30c30c30c3;
+  v = (v | v << 2) & 0x1249249249249249;
+  return v;
+}
+
+// The points in Morton (Z-curve) order of their positions, in cubic cells over the points'
+// bounding box. A work-item takes PN_LANES consecutive points, and the patch table lists a
+// face's casters for boxes of consecutive work-items (patch_table.cpp): compact runs of points
+// keep those boxes small. In a grid's own order a group of 128 points is a strip as long as the
+// room, whose list holds every caster along it.
+std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
+  Vec3 lo = points[0].position, hi = lo;
+  for (const SamplePoint& p : points) {
+    lo = lo.cwiseMin(p.position);
+    hi = hi.cwiseMax(p.position);
+  }
+  const double extent = (hi - lo).maxCoeff();
+  const double cells = double{1 << 21} - 1.0;
+  const double scale = extent > 0.0 ? cells / extent : 0.0;
+  std::vector<std::pair<std::uint64_t, std::size_t>> keys(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3 q = (points[i].position - lo) * scale;
+    std::uint64_t key = 0;
+    for (int k = 0; k < 3; ++k)
+      key |= spreadBits(static_cast<std::uint64_t>(std::clamp(q[k], 0.0, cells))) << k;
+    keys[i] = {key, i};
+  }
+  std::sort(keys.begin(), keys.end());
+  std::vector<std::size_t> order(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) order[i] = keys[i].second;
+  return order;
+}
+
+}  // namespace
+
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
+  // The plain path (the foundation's) takes the points as given: its work per point does not
+  // depend on the point's neighbours.
+  if (!state_->options.culling || points.size() <= PN_LANES)
+    return evaluateInOrder(points, bySource);
+  const std::vector<std::size_t> order = mortonOrder(points);
+  std::vector<SamplePoint> sorted(points.size());
+  for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = points[order[i]];
+  const IlluminanceResult inOrder = evaluateInOrder(sorted, bySource);
+  IlluminanceResult result;
+  result.sourceCount = inOrder.sourceCount;
+  const std::size_t sources = static_cast<std::size_t>(inOrder.sourceCount);
+  result.illuminance.resize(inOrder.illuminance.size());
+  result.shadowClass.resize(inOrder.shadowClass.size());
+  result.bySource.resize(inOrder.bySource.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const std::size_t to = order[i];
+    result.illuminance[to] = inOrder.illuminance[i];
+    for (std::size_t s = 0; s < sources; ++s) {
+      if (!inOrder.shadowClass.empty())
+        result.shadowClass[to * sources + s] = inOrder.shadowClass[i * sources + s];
+      if (!inOrder.bySource.empty())
+        result.bySource[to * sources + s] = inOrder.bySource[i * sources + s];
+    }
+  }
+  return result;
+}
+
+IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint> points,
+                                                     bool bySource) {
   IlluminanceResult result;
   result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
@@ -122,8 +199,9 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   }
   // The volumes are grown by twice the kernel's tolerance: the kernel tests points against them
   // within its tolerance, in float.
-  const PatchTable table = buildPatchTable(state_->shadows, state_->packed, points, workItems,
-                                           state_->options.culling, 2.0 * state_->packed.epsLength);
+  const PatchTable table =
+      buildPatchTable(state_->shadows, state_->volumes, state_->packed, points, workItems,
+                      state_->options.culling, 2.0 * state_->packed.epsLength);
 
   compute::Device& d = *state_->device;
   const std::size_t outValues = bySource ? padded * std::max(result.sourceCount, 1) : padded;
@@ -139,8 +217,8 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
     constexpr std::size_t kGroupPoints = PN_LANES * kWorkGroup;
     if (n > kGroupPoints) {
       const std::size_t half = (n / 2 + kGroupPoints - 1) / kGroupPoints * kGroupPoints;
-      IlluminanceResult first = evaluate(points.first(half), bySource);
-      IlluminanceResult second = evaluate(points.subspan(half), bySource);
+      IlluminanceResult first = evaluateInOrder(points.first(half), bySource);
+      IlluminanceResult second = evaluateInOrder(points.subspan(half), bySource);
       const auto append = [](auto& to, const auto& from) {
         to.insert(to.end(), from.begin(), from.end());
       };

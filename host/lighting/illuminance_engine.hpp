@@ -56,6 +56,9 @@ class IlluminanceEngine {
   IlluminanceResult evaluate(std::span<const SamplePoint> points, bool bySource = false);
 
  private:
+  // evaluate() for points in the order the kernel's work-items take them.
+  IlluminanceResult evaluateInOrder(std::span<const SamplePoint> points, bool bySource);
+
   struct State;
   std::unique_ptr<State> state_;
 };

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 
-#include "shadow/face_class.hpp"
 #include "shadow/receiver_candidates.hpp"
 
 namespace penumbra {
@@ -28,36 +27,58 @@ BoundingBox boxOf(std::span<const SamplePoint> points, std::size_t first, std::s
   return box;
 }
 
-FaceClass patchClass(std::span<const SamplePoint> points, std::size_t first,
-                     const EmittingFaceShadows& face) {
-  const Plane emission = face.face.plane();
-  bool allC = true, allA = true;
+// Whether no point of the patch receives anything from the face: every point is of class C
+// (shadow/face_class.hpp: not strictly in front of the face's plane `emission`, or every vertex
+// on or below its horizon). The first point that sees a vertex answers, so this is about one
+// test per patch. Whether the horizon cuts the face (class A or B) the kernel finds for itself.
+bool patchSeesNothing(std::span<const SamplePoint> points, std::size_t first,
+                      const EmittingFaceShadows& face, const Plane& emission) {
   for (std::size_t i = first; i < first + PN_LANES; ++i) {
     const SamplePoint& p = pointAt(points, i);
-    const FaceClass c = classifyPoint(p.position, p.normal, face.face.vertices(), emission);
-    allC = allC && c == FaceClass::C;
-    allA = allA && c == FaceClass::A;
+    if (emission.signedDistance(p.position) <= 0.0) continue;
+    for (const Vec3& q : face.face.vertices())
+      if (p.normal.dot(q - p.position) > 0.0) return false;
   }
-  return allC ? FaceClass::C : allA ? FaceClass::A : FaceClass::B;
+  return true;
 }
 
-int kernelClass(FaceClass c) {
-  switch (c) {
-    case FaceClass::A:
-      return PN_CLASS_A;
-    case FaceClass::B:
-      return PN_CLASS_B;
-    case FaceClass::C:
-      return PN_CLASS_C;
+// candidatesForBox (shadow/receiver_candidates.hpp) on the flattened volumes, the same
+// arithmetic: the casters among `among` whose grown penumbra volume may meet the box, into
+// `found` (cleared first).
+void boxCandidates(const FaceVolumes& volumes, const BoundingBox& box, std::span<const int> among,
+                   double margin, std::vector<int>& found) {
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const Vec3 half = 0.5 * (box.hi - box.lo);
+  found.clear();
+  for (int k : among) {
+    bool meets = true;
+    for (std::size_t j = volumes.first[k]; j < volumes.first[k + 1] && meets; ++j) {
+      const Plane& plane = volumes.planes[j];
+      // The box corner deepest inside the half-space.
+      meets = !(plane.signedDistance(centre) - plane.normal.cwiseAbs().dot(half) > margin);
+    }
+    if (meets) found.push_back(k);
   }
-  return PN_CLASS_B;
 }
 
 }  // namespace
 
-PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packed,
-                           std::span<const SamplePoint> points, std::size_t workItems, bool culling,
-                           double margin) {
+std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows) {
+  std::vector<FaceVolumes> all(shadows.faces.size());
+  for (std::size_t f = 0; f < all.size(); ++f) {
+    FaceVolumes& v = all[f];
+    v.first.push_back(0);
+    for (const ShadowCaster& caster : shadows.faces[f].casters) {
+      v.planes.insert(v.planes.end(), caster.volume.penumbra.begin(), caster.volume.penumbra.end());
+      v.first.push_back(v.planes.size());
+    }
+  }
+  return all;
+}
+
+PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
+                           const KernelScene& packed, std::span<const SamplePoint> points,
+                           std::size_t workItems, bool culling, double margin) {
   const std::size_t faceCount = shadows.faces.size();
   PatchTable table;
   table.entries.resize(workItems * faceCount);
@@ -73,12 +94,14 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
   tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
-    const EmittingFaceShadows& face = shadows.faces[sf % faceCount];
-    std::vector<int> all(face.casters.size());
+    const std::size_t f = sf % faceCount;
+    std::vector<int> all(shadows.faces[f].casters.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    superCandidates[sf] =
-        candidatesForBox(face, boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin);
+    boxCandidates(volumes[f], boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin,
+                  superCandidates[sf]);
   });
+  std::vector<Plane> emission(faceCount);
+  for (std::size_t f = 0; f < faceCount; ++f) emission[f] = shadows.faces[f].face.plane();
   std::vector<std::vector<cl_int>> groupCandidates(groups);
   tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t g) {
     const std::size_t firstItem = g * kItemsPerGroup;
@@ -88,17 +111,18 @@ PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packe
     std::vector<BoundingBox> itemBoxes(items);
     for (std::size_t w = 0; w < items; ++w)
       itemBoxes[w] = boxOf(points, (firstItem + w) * PN_LANES, PN_LANES);
+    std::vector<int> near, found;
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
-      const std::vector<int> near = candidatesForBox(
-          face, groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f], margin);
+      boxCandidates(volumes[f], groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f],
+                    margin, near);
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
-        const FaceClass c = patchClass(points, w * PN_LANES, face);
-        entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, kernelClass(c), 0};
-        if (c == FaceClass::C || near.empty()) continue;
-        for (int k : candidatesForBox(face, itemBoxes[w - firstItem], near, margin))
-          list.push_back(packed.faces[f].firstOccluder + k);
+        const bool dark = patchSeesNothing(points, w * PN_LANES, face, emission[f]);
+        entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, dark ? PN_CLASS_C : PN_CLASS_B, 0};
+        if (dark || near.empty()) continue;
+        boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
+        for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
       }
     }

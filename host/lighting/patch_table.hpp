@@ -17,12 +17,22 @@ struct PatchTable {
   std::vector<cl_int> candidates;    // indices into KernelScene::occluders
 };
 
+// Every face's casters' penumbra planes in one array per face (built once per scene): the box
+// tests read them for every patch, and the casters themselves are large objects scattered in
+// memory (the tests waited on cache misses).
+struct FaceVolumes {
+  std::vector<Plane> planes;
+  std::vector<std::size_t> first;  // caster k: planes [first[k], first[k + 1])
+};
+std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows);
+
 // `points` padded as the kernel sees them: work-item w holds points [w·PN_LANES, (w+1)·PN_LANES)
 // and the padding repeats the last point. `margin` (m) grows every volume, to cover the
 // kernel's own tolerance and float rounding. With culling off every entry lists all occluders
 // of its face with class B: the plain path.
-PatchTable buildPatchTable(const SceneShadows& shadows, const KernelScene& packed,
-                           std::span<const SamplePoint> points, std::size_t workItems, bool culling,
-                           double margin);
+// `volumes` is flattenVolumes(shadows).
+PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
+                           const KernelScene& packed, std::span<const SamplePoint> points,
+                           std::size_t workItems, bool culling, double margin);
 
 }  // namespace penumbra
