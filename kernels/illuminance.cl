@@ -1277,19 +1277,19 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       /* The eight-lane path; the lanes whose occluders it could not hold beside the others' get
        * another call among themselves, whose union of occluders is smaller, while that helps. */
       if (use_volumes & 2) {
-        int8 todo = t.shaded;
+        int8 pending = t.shaded;
         scalar_lanes = 0;
-        for (int pass = 0; pass < PN_VEC_PASSES && pn_any(todo); ++pass) {
-          int8 asked = todo, scalar;
+        for (int pass = 0; pass < PN_VEC_PASSES && pn_any(pending); ++pass) {
+          int8 asked = pending, scalar;
           float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, candidates,
                                         view, ap, vertices, occluders, planes, edges, overts,
-                                        eps_length, inside, &todo, &scalar);
+                                        eps_length, inside, &pending, &scalar);
           scalar_lanes |= scalar;
-          int8 done = asked & ~(todo | scalar);
+          int8 done = asked & ~(pending | scalar);
           e_face = select(e_face, e_pen, done);
           if (!pn_any(done)) break; /* no progress: what is left goes scalar */
         }
-        scalar_lanes |= todo;
+        scalar_lanes |= pending;
       }
       if (pn_any(scalar_lanes)) {
         float lane_e[PN_LANES];
