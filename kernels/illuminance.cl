@@ -29,18 +29,13 @@ inline bool pn_any(int8 m) {
 /* cross(b, a) is computed as cross(b − a, a): for a short edge far from P, a and b are long and
  * nearly parallel, b − a is exact in float (Sterbenz) and short, and the products are |e|·|a|
  * instead of |a|·|b|. For a 0.6 m panel 10 m away this takes the term's relative error from
- * about 2e-6 to 1e-7, which matters because the terms of a distant source nearly cancel. */
-inline float edge_term(float3 a, float3 b, float3 n) {
-  float3 c = cross(b - a, a);
-  float s = length(c);
-  /* A zero-length edge, or one whose line passes through P, spans no solid angle. */
-  if (!(s > 0.0f)) return 0.0f;
-  return atan2(s, dot(a, b)) * dot(n, c) / s;
-}
-
+ * about 2e-6 to 1e-7, which matters because the terms of a distant source nearly cancel. (The
+ * penumbra paths integrate pieces of edges with piece_term, which keeps this accuracy for ends
+ * that are not vertices.) A zero-length edge, or one whose line passes through P, spans no solid
+ * angle. */
 inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                          float8 nx, float8 ny, float8 nz) {
-  float8 ex = bx - ax, ey = by - ay, ez = bz - az; /* as in edge_term: cross(b − a, a) */
+  float8 ex = bx - ax, ey = by - ay, ez = bz - az;
   float8 cx = ey * az - ez * ay;
   float8 cy = ez * ax - ex * az;
   float8 cz = ex * ay - ey * ax;
@@ -442,20 +437,6 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, __global const int4* edg
   return true;
 }
 
-/* Clips [*t0, *t1] to {t : f0 + t (f1 - f0) >= 0}. */
-inline void clip_interval(float f0, float f1, float* t0, float* t1) {
-  if (f0 >= 0.0f && f1 >= 0.0f) return;
-  if (f0 < 0.0f && f1 < 0.0f) {
-    *t1 = *t0 - 1.0f;
-    return;
-  }
-  float t = f0 / (f0 - f1);
-  if (f0 < 0.0f)
-    *t0 = fmax(*t0, t);
-  else
-    *t1 = fmin(*t1, t);
-}
-
 /* A side plane through P and the segment (a, b) is undefined when the segment is a point or
  * its line passes through P. */
 inline bool degenerate_side(float3 m, float3 a, float3 b) {
@@ -465,7 +446,7 @@ inline bool degenerate_side(float3 m, float3 a, float3 b) {
 /* The unit normal of the side plane through P and (a, b); zero when it is undefined. Side
  * planes are normalised once per point so that the tests below need no square roots. */
 inline float3 side_normal(float3 a, float3 b) {
-  float3 m = cross(a, b);
+  float3 m = cross(a, b - a);
   return degenerate_side(m, a, b) ? (float3)(0.0f) : normalize(m);
 }
 
@@ -487,14 +468,94 @@ inline float3 edge_point(float3 a, float3 b, float t) {
   return t <= 0.5f ? a + t * (b - a) : b - (1.0f - t) * (b - a);
 }
 
-/* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source). */
-float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraState* st,
+/* Where a visible piece ends because another region's side plane crosses the edge, the boundary
+ * turns onto that region's edge, whose piece starts at the same direction: the line where the two
+ * side planes meet. Both edges take it as the cross product of the two unit normals in one order
+ * (that of their plane ids), so the two get the same vector bit for bit and the visible contour
+ * closes. Ends computed on each edge from its own parameter t leave a gap of a few float
+ * roundings, and a gap of δ rad costs about L·δ however small the source looks: for a 0.6 m
+ * panel 10 m away, seen past a chair back 0.4 m from P, that was up to 2e-3 of the panel's
+ * illuminance (tests/distant_source_test.cpp; now 6e-5, the float rounding of the unoccluded
+ * formula there). The vector is scaled by a power of two (exact) to the length of the edge's own
+ * point at t, for piece_term. Where the planes are nearly parallel (sine below PN_EPS_REL) the
+ * line is ill-defined and both edges keep their own point. */
+#define PN_ID_VERTEX -1 /* a piece end at the edge's own end, or at the horizon */
+inline float3 crossing_point(float3 m_self, int id_self, float3 m_other, int id_other,
+                             float3 own_point) {
+  float3 d = id_self < id_other ? cross(m_self, m_other) : cross(m_other, m_self);
+  float ld = length(d);
+  if (!(ld > PN_EPS_REL)) return own_point;
+  if (dot(d, own_point) < 0.0f) d = -d;
+  return ldexp(d, ilogb(length(own_point)) - ilogb(ld));
+}
+
+/* x·y − z·w to about one rounding of the result (Kahan's algorithm with fma), where the plain
+ * products would leave the rounding of the larger of them. */
+inline float diff_of_products(float x, float y, float z, float w) {
+  float zw = z * w;
+  return fma(x, y, -zw) + fma(-z, w, zw);
+}
+
+/* cross(p, q), each component to about one rounding of itself. */
+inline float3 accurate_cross(float3 p, float3 q) {
+  return (float3)(diff_of_products(p.y, q.z, p.z, q.y), diff_of_products(p.z, q.x, p.x, q.z),
+                  diff_of_products(p.x, q.y, p.y, q.x));
+}
+
+/* Lambert's term of the piece (p0 → p1) of an edge, as edge_term8: the great circle through the
+ * two ends as computed, so that pieces meeting at a crossing point close the contour exactly (the
+ * edge's own circle and the other edge's miss the computed crossing by a rounding each, and would
+ * leave that gap). The angle and the circle's normal must be good to a rounding of themselves,
+ * not of a radian: the terms of a small source nearly cancel, and an error δ in one angle costs
+ * about L·δ. edge_term8 gets that from b − a, exact where a and b are nearly parallel; a crossing
+ * point is only scaled to about the length of its partner, so the cross product is made accurate
+ * instead. */
+inline float piece_term(float3 p0, float3 p1, float3 n) {
+  float3 c = accurate_cross(p0, p1);
+  float s = length(c);
+  if (!(s > 0.0f)) return 0.0f;
+  return -atan2(s, dot(p0, p1)) * dot(n, c) / s;
+}
+
+/* Clips [*t0, *t1] to {t : f0 + t (f1 - f0) >= 0}, remembering which plane (its id) set each
+ * end. */
+inline void clip_interval_id(float f0, float f1, int id, float* t0, float* t1, int* id0, int* id1) {
+  if (f0 >= 0.0f && f1 >= 0.0f) return;
+  if (f0 < 0.0f && f1 < 0.0f) {
+    *t1 = *t0 - 1.0f;
+    return;
+  }
+  float t = f0 / (f0 - f1);
+  if (f0 < 0.0f) {
+    if (t > *t0) {
+      *t0 = t;
+      *id0 = id;
+    }
+  } else if (t < *t1) {
+    *t1 = t;
+    *id1 = id;
+  }
+}
+
+/* The side planes' ids: S' edges first, then the active occluders' contour edges. */
+#define PN_ID_CONTOUR PN_MAX_SOURCE_POLYGON
+inline float3 plane_of(const PenumbraState* st, int id) {
+  return id < PN_ID_CONTOUR ? st->sm[id] : st->cm[id - PN_ID_CONTOUR];
+}
+
+/* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source),
+ * whose side plane has id `self` (its unit normal is plane_of(st, self)). */
+float visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const PenumbraState* st,
                         int* error) {
+  const float3 m_self = plane_of(st, self);
+  if (no_plane(m_self)) return 0.0f; /* its line passes through P: no solid angle */
   float lo[PN_MAX_VISIBLE_PIECES], hi[PN_MAX_VISIBLE_PIECES];
+  int lo_id[PN_MAX_VISIBLE_PIECES], hi_id[PN_MAX_VISIBLE_PIECES];
   int pieces = 1;
   lo[0] = 0.0f;
   hi[0] = 1.0f;
-  float3 me = cross(a, b);
+  lo_id[0] = hi_id[0] = PN_ID_VERTEX;
+  const float3 me = m_self;
   const float la = length(a), lb = length(b);
 
   if (owner >= 0) { /* an occluder edge counts only inside S' */
@@ -506,7 +567,7 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
       /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
        * opposite → dropped. Either way this occluder edge is not counted. */
       if (in_plane(f0, f1, la, lb)) return 0.0f;
-      clip_interval(f0, f1, &t0, &t1);
+      clip_interval_id(f0, f1, i, &t0, &t1, &lo_id[0], &hi_id[0]);
       if (!(t1 > t0)) return 0.0f;
     }
     lo[0] = t0;
@@ -516,6 +577,7 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
   for (int v = 0; v < st->na; ++v) {
     if (v == owner) continue;
     float t0 = 0.0f, t1 = 1.0f;
+    int id0 = PN_ID_VERTEX, id1 = PN_ID_VERTEX;
     bool covers = true;
     for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
       float3 m = st->cm[e];      /* inside the occluder's cone: m·x > 0 */
@@ -526,23 +588,28 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
         if (same_side && owner < v) covers = false; /* this edge is the one kept */
         continue;                                   /* otherwise the plane does not limit */
       }
-      clip_interval(f0, f1, &t0, &t1);
+      clip_interval_id(f0, f1, PN_ID_CONTOUR + e, &t0, &t1, &id0, &id1);
       if (!(t1 > t0)) covers = false;
     }
     if (!covers) continue;
     /* Subtract [t0, t1] from the sorted, disjoint visible pieces. */
     float nlo[PN_MAX_VISIBLE_PIECES], nhi[PN_MAX_VISIBLE_PIECES];
+    int nlo_id[PN_MAX_VISIBLE_PIECES], nhi_id[PN_MAX_VISIBLE_PIECES];
     int count = 0;
     for (int k = 0; k < pieces; ++k) {
       if (t1 <= lo[k] || t0 >= hi[k]) {
         nlo[count] = lo[k];
         nhi[count] = hi[k];
+        nlo_id[count] = lo_id[k];
+        nhi_id[count] = hi_id[k];
         ++count;
         continue;
       }
       if (t0 > lo[k]) {
         nlo[count] = lo[k];
         nhi[count] = t0;
+        nlo_id[count] = lo_id[k];
+        nhi_id[count] = id0;
         ++count;
       }
       if (t1 < hi[k]) {
@@ -552,6 +619,8 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
         }
         nlo[count] = t1;
         nhi[count] = hi[k];
+        nlo_id[count] = id1;
+        nhi_id[count] = hi_id[k];
         ++count;
       }
     }
@@ -559,13 +628,21 @@ float visible_edge_term(float3 a, float3 b, int owner, float3 n, const PenumbraS
     for (int k = 0; k < pieces; ++k) {
       lo[k] = nlo[k];
       hi[k] = nhi[k];
+      lo_id[k] = nlo_id[k];
+      hi_id[k] = nhi_id[k];
     }
     if (pieces == 0) return 0.0f;
   }
 
   float sum = 0.0f;
-  for (int k = 0; k < pieces; ++k)
-    sum += edge_term(edge_point(a, b, lo[k]), edge_point(a, b, hi[k]), n);
+  for (int k = 0; k < pieces; ++k) {
+    float3 p0 = edge_point(a, b, lo[k]), p1 = edge_point(a, b, hi[k]);
+    if (lo_id[k] != PN_ID_VERTEX)
+      p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0);
+    if (hi_id[k] != PN_ID_VERTEX)
+      p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1);
+    sum += piece_term(p0, p1, n);
+  }
   return sum;
 }
 
@@ -575,10 +652,10 @@ float region_sum(PenumbraState* st, float3 n, int* error) {
     st->sm[i] = side_normal(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1]);
   float sum = 0.0f;
   for (int i = 0; i < st->ns; ++i)
-    sum += visible_edge_term(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1], -1, n, st, error);
+    sum += visible_edge_term(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1], -1, i, n, st, error);
   for (int u = 0; u < st->na; ++u)
     for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
-      sum += visible_edge_term(st->ca[e], st->cb[e], u, n, st, error);
+      sum += visible_edge_term(st->ca[e], st->cb[e], u, PN_ID_CONTOUR + e, n, st, error);
   return sum;
 }
 
@@ -786,7 +863,8 @@ typedef struct {
 
 inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                          float8* mx, float8* my, float8* mz) {
-  float8 cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+  float8 ex = bx - ax, ey = by - ay, ez = bz - az;
+  float8 cx = ay * ez - az * ey, cy = az * ex - ax * ez, cz = ax * ey - ay * ex;
   float8 len = sqrt(cx * cx + cy * cy + cz * cz);
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
   int8 none = len <= PN_EPS_REL * la * lb;
@@ -795,28 +873,92 @@ inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
   *mz = select(cz / len, (float8)(0.0f), none);
 }
 
-/* clip_interval in eight lanes: clips [t0, t1] to {t : f0 + t (f1 - f0) >= 0} in the lanes of
- * `clip`; returns the lanes where the interval is not empty. */
-inline int8 clip_interval8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1) {
+inline float8 edge_point8(float8 a, float8 b, float8 t) {
+  return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
+}
+
+/* A piece end per lane where another region's side plane set it: the cross product of the two
+ * unit side normals, in the order of their plane ids (crossing_point says why). */
+typedef struct {
+  float8 x, y, z;
+  int8 set;
+} PieceEnd8;
+
+inline void piece_end_clear8(PieceEnd8* e) {
+  e->x = e->y = e->z = 0.0f;
+  e->set = 0;
+}
+
+/* The side planes' ids in eight lanes: S' edges, the chord, then the contour store. */
+#define PN_VEC_ID_CHORD PN_VEC_SOURCE
+#define PN_VEC_ID_CONTOUR (PN_VEC_SOURCE + 1)
+
+/* clip_interval_id in eight lanes, on the lanes of `clip` (returns those where the interval is not
+ * empty); for the ends it moves it keeps the crossing of the edge's side plane
+ * (unit normal ms, id self) with the clipping plane (mc, id). */
+inline int8 clip_interval_end8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1, float8 msx,
+                               float8 msy, float8 msz, int self, float8 mcx, float8 mcy, float8 mcz,
+                               int id, PieceEnd8* e0, PieceEnd8* e1) {
   int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
   int8 enters = clip & n0 & ~n1, leaves = clip & ~n0 & n1;
-  if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */
+  if (pn_any(enters | leaves)) {
     float8 t = f0 / (f0 - f1);
-    *t0 = select(*t0, fmax(*t0, t), enters);
-    *t1 = select(*t1, fmin(*t1, t), leaves);
+    int8 up0 = enters & (t > *t0), up1 = leaves & (t < *t1);
+    *t0 = select(*t0, t, up0);
+    *t1 = select(*t1, t, up1);
+    if (pn_any(up0 | up1)) {
+      float8 px = self < id ? msx : mcx, py = self < id ? msy : mcy, pz = self < id ? msz : mcz;
+      float8 qx = self < id ? mcx : msx, qy = self < id ? mcy : msy, qz = self < id ? mcz : msz;
+      float8 dx = py * qz - pz * qy, dy = pz * qx - px * qz, dz = px * qy - py * qx;
+      e0->x = select(e0->x, dx, up0);
+      e0->y = select(e0->y, dy, up0);
+      e0->z = select(e0->z, dz, up0);
+      e0->set |= up0;
+      e1->x = select(e1->x, dx, up1);
+      e1->y = select(e1->y, dy, up1);
+      e1->z = select(e1->z, dz, up1);
+      e1->set |= up1;
+    }
   }
   return ~(clip & n0 & n1) & (*t1 > *t0);
 }
 
-inline float8 edge_point8(float8 a, float8 b, float8 t) {
-  return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
+/* The point of a piece end: the crossing direction where one was set and is well defined, scaled
+ * by a power of two to the length of the edge's own point (px, py, pz) at t and turned to its
+ * side; that point elsewhere. */
+inline void piece_point8(PieceEnd8 e, float8* px, float8* py, float8* pz) {
+  float8 ld = sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
+  int8 use = e.set & (ld > PN_EPS_REL);
+  if (!pn_any(use)) return;
+  float8 lp = sqrt(*px * *px + *py * *py + *pz * *pz);
+  float8 sign = select((float8)(1.0f), (float8)(-1.0f), e.x * *px + e.y * *py + e.z * *pz < 0.0f);
+  int8 k = ilogb(lp) - ilogb(ld);
+  *px = select(*px, ldexp(sign * e.x, k), use);
+  *py = select(*py, ldexp(sign * e.y, k), use);
+  *pz = select(*pz, ldexp(sign * e.z, k), use);
+}
+
+inline float8 diff_of_products8(float8 x, float8 y, float8 z, float8 w) {
+  float8 zw = z * w;
+  return fma(x, y, -zw) + fma(-z, w, zw);
+}
+
+/* piece_term in eight lanes. */
+inline float8 piece_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                          float8 nx, float8 ny, float8 nz) {
+  float8 cx = diff_of_products8(ay, bz, az, by), cy = diff_of_products8(az, bx, ax, bz),
+         cz = diff_of_products8(ax, by, ay, bx);
+  float8 s = sqrt(cx * cx + cy * cy + cz * cz);
+  float8 term = -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s;
+  return select(term, (float8)(0.0f), s <= 0.0f);
 }
 
 /* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
  * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
 float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
-                          float8 lo, float8 hi, int8 on, int owner, float8 nx, float8 ny, float8 nz,
-                          const Contours8* cs) {
+                          float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
+                          PieceEnd8 lo_end, PieceEnd8 hi_end, int8 on, int owner, float8 nx,
+                          float8 ny, float8 nz, const Contours8* cs) {
   if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -829,9 +971,12 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
          buy = 0.0f, buz = 0.0f, tax = 0.0f, tay = 0.0f, taz = 0.0f, tbx = 0.0f, tby = 0.0f,
          tbz = 0.0f;
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
+  PieceEnd8 e0[PN_VEC_OCCLUDERS], e1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
+    piece_end_clear8(&e0[v]);
+    piece_end_clear8(&e1[v]);
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
     if (pn_any(covers)) {
       if (!cone_ready) {
@@ -873,7 +1018,8 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
       int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
       if (owner < v) /* same visible side: this edge is the one kept */
         covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
-      covers &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
+      covers &= clip_interval_end8(f0, f1, use & ~inplane, &t0, &t1, msx, msy, msz, self, e->mx,
+                                   e->my, e->mz, PN_VEC_ID_CONTOUR + k, &e0[v], &e1[v]);
     }
     c0[v] = t0;
     c1[v] = t1;
@@ -885,21 +1031,32 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   float8 sum = 0.0f;
   for (int j = -1; j < cs->na; ++j) {
     float8 st = j < 0 ? lo : c1[j];
+    PieceEnd8 st_end = j < 0 ? lo_end : e1[j];
     int8 valid = j < 0 ? on : cov[j];
     valid &= (st >= lo) & (st < hi);
     float8 end = hi;
+    PieceEnd8 end_end = hi_end;
     for (int w = 0; w < cs->na && pn_any(valid); ++w) {
       valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
-      end = select(end, fmin(end, c0[w]), cov[w] & (c0[w] > st));
+      int8 nearer = cov[w] & (c0[w] > st) & (c0[w] < end);
+      end = select(end, c0[w], nearer);
+      end_end.x = select(end_end.x, e0[w].x, nearer);
+      end_end.y = select(end_end.y, e0[w].y, nearer);
+      end_end.z = select(end_end.z, e0[w].z, nearer);
+      end_end.set = select(end_end.set, e0[w].set, nearer);
     }
     for (int i = 0; i <= j && pn_any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
     starts[j + 1] = st;
     kept[j + 1] = valid;
     valid &= end > st;
     if (!pn_any(valid)) continue;
-    float8 term = edge_term8(edge_point8(ax, bx, st), edge_point8(ay, by, st),
-                             edge_point8(az, bz, st), edge_point8(ax, bx, end),
-                             edge_point8(ay, by, end), edge_point8(az, bz, end), nx, ny, nz);
+    float8 p0x = edge_point8(ax, bx, st), p0y = edge_point8(ay, by, st),
+           p0z = edge_point8(az, bz, st);
+    float8 p1x = edge_point8(ax, bx, end), p1y = edge_point8(ay, by, end),
+           p1z = edge_point8(az, bz, end);
+    piece_point8(st_end, &p0x, &p0y, &p0z);
+    piece_point8(end_end, &p1x, &p1y, &p1z);
+    float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
     sum += select((float8)(0.0f), term, valid);
   }
   return sum;
@@ -1105,17 +1262,21 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   }
 
   float8 sum = 0.0f;
-  /* (a) The source's edges above the horizon, and the chord. */
+  /* (a) The source's edges above the horizon, and the chord. Their ends are vertices or on the
+   * horizon, where the edge and the chord compute the same point. */
+  PieceEnd8 none;
+  piece_end_clear8(&none);
   for (int i = 0; i < m; ++i) {
     int j = i + 1 == m ? 0 : i + 1;
     int8 a_in = sh[i] >= 0.0f, b_in = sh[j] >= 0.0f;
     float8 t = sh[i] / (sh[i] - sh[j]);
     float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
-    sum += visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], lo, hi,
-                              lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
+    sum += visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], smx[i], smy[i], smz[i], i,
+                              lo, hi, none, none, lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
   }
-  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, (float8)(0.0f), (float8)(1.0f),
-                            lanes & cut, -1, nx, ny, nz, &cs);
+  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, cmx, cmy, cmz, PN_VEC_ID_CHORD,
+                            (float8)(0.0f), (float8)(1.0f), none, none, lanes & cut, -1, nx, ny, nz,
+                            &cs);
   /* (b) The occluders' contour edges inside S', as holes. */
   for (int u = 0; u < cs.na; ++u)
     for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
@@ -1124,7 +1285,11 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       if (!pn_any(on)) continue;
       float8 la = sqrt(e->ax * e->ax + e->ay * e->ay + e->az * e->az);
       float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
+      const EdgePlane8* ep = &cs.p[k];
       float8 t0 = 0.0f, t1 = 1.0f;
+      PieceEnd8 lo_end, hi_end;
+      piece_end_clear8(&lo_end);
+      piece_end_clear8(&hi_end);
       for (int i = 0; i <= m && pn_any(on); ++i) {
         float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
         int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
@@ -1135,10 +1300,13 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
         int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
         on &= ~inplane;
-        on &= clip_interval8(f0, f1, use & ~inplane, &t0, &t1);
+        on &= clip_interval_end8(f0, f1, use & ~inplane, &t0, &t1, ep->mx, ep->my, ep->mz,
+                                 PN_VEC_ID_CONTOUR + k, mx, my, mz, i < m ? i : PN_VEC_ID_CHORD,
+                                 &lo_end, &hi_end);
       }
-      sum += visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, t0, t1, on, u, nx, ny, nz,
-                                &cs);
+      sum +=
+          visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
+                             PN_VEC_ID_CONTOUR + k, t0, t1, lo_end, hi_end, on, u, nx, ny, nz, &cs);
     }
   return select((float8)(0.0f), fmax(sum, 0.0f), lanes);
 }
