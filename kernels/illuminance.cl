@@ -476,17 +476,14 @@ inline float3 edge_point(float3 a, float3 b, float t) {
  * roundings, and a gap of δ rad costs about L·δ however small the source looks: for a 0.6 m
  * panel 10 m away, seen past a chair back 0.4 m from P, that was up to 2e-3 of the panel's
  * illuminance (tests/distant_source_test.cpp; now 6e-5, the float rounding of the unoccluded
- * formula there). The vector is scaled by a power of two (exact) to the length of the edge's own
- * point at t, for piece_term. Where the planes are nearly parallel (sine below PN_EPS_REL) the
- * line is ill-defined and both edges keep their own point. */
+ * formula there). Its length does not matter (piece_term). Where the planes are nearly parallel
+ * (sine below PN_EPS_REL) the line is ill-defined and both edges keep their own point. */
 #define PN_ID_VERTEX -1 /* a piece end at the edge's own end, or at the horizon */
 inline float3 crossing_point(float3 m_self, int id_self, float3 m_other, int id_other,
                              float3 own_point) {
   float3 d = id_self < id_other ? cross(m_self, m_other) : cross(m_other, m_self);
-  float ld = length(d);
-  if (!(ld > PN_EPS_REL)) return own_point;
-  if (dot(d, own_point) < 0.0f) d = -d;
-  return ldexp(d, ilogb(length(own_point)) - ilogb(ld));
+  if (!(dot(d, d) > PN_EPS_REL * PN_EPS_REL)) return own_point;
+  return dot(d, own_point) < 0.0f ? -d : d;
 }
 
 /* x·y − z·w to about one rounding of the result (Kahan's algorithm with fma), where the plain
@@ -507,9 +504,9 @@ inline float3 accurate_cross(float3 p, float3 q) {
  * edge's own circle and the other edge's miss the computed crossing by a rounding each, and would
  * leave that gap). The angle and the circle's normal must be good to a rounding of themselves,
  * not of a radian: the terms of a small source nearly cancel, and an error δ in one angle costs
- * about L·δ. edge_term8 gets that from b − a, exact where a and b are nearly parallel; a crossing
- * point is only scaled to about the length of its partner, so the cross product is made accurate
- * instead. */
+ * about L·δ. edge_term8 gets that from b − a, exact where a and b are nearly parallel; the ends of
+ * a piece may be a crossing direction and a point of any length, so the cross product is made
+ * accurate instead. */
 inline float piece_term(float3 p0, float3 p1, float3 n) {
   float3 c = accurate_cross(p0, p1);
   float s = length(c);
@@ -889,53 +886,72 @@ inline void piece_end_clear8(PieceEnd8* e) {
   e->set = 0;
 }
 
-/* The side planes' ids in eight lanes: S' edges, the chord, then the contour store. */
-#define PN_VEC_ID_CHORD PN_VEC_SOURCE
+/* The side planes' ids in eight lanes: S' edges 0 … m − 1, the chord m, then the contour store. */
 #define PN_VEC_ID_CONTOUR (PN_VEC_SOURCE + 1)
 
 /* clip_interval_id in eight lanes, on the lanes of `clip` (returns those where the interval is not
- * empty); for the ends it moves it keeps the crossing of the edge's side plane
- * (unit normal ms, id self) with the clipping plane (mc, id). */
-inline int8 clip_interval_end8(float8 f0, float8 f1, int8 clip, float8* t0, float8* t1, float8 msx,
-                               float8 msy, float8 msz, int self, float8 mcx, float8 mcy, float8 mcz,
-                               int id, PieceEnd8* e0, PieceEnd8* e1) {
+ * empty): id0 and id1 keep, per lane, the plane (its index k) that set each end. */
+inline int8 clip_interval_id8(float8 f0, float8 f1, int8 clip, int k, float8* t0, float8* t1,
+                              int8* id0, int8* id1) {
   int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
   int8 enters = clip & n0 & ~n1, leaves = clip & ~n0 & n1;
-  if (pn_any(enters | leaves)) {
+  if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */
     float8 t = f0 / (f0 - f1);
     int8 up0 = enters & (t > *t0), up1 = leaves & (t < *t1);
     *t0 = select(*t0, t, up0);
     *t1 = select(*t1, t, up1);
-    if (pn_any(up0 | up1)) {
-      float8 px = self < id ? msx : mcx, py = self < id ? msy : mcy, pz = self < id ? msz : mcz;
-      float8 qx = self < id ? mcx : msx, qy = self < id ? mcy : msy, qz = self < id ? mcz : msz;
-      float8 dx = py * qz - pz * qy, dy = pz * qx - px * qz, dz = px * qy - py * qx;
-      e0->x = select(e0->x, dx, up0);
-      e0->y = select(e0->y, dy, up0);
-      e0->z = select(e0->z, dz, up0);
-      e0->set |= up0;
-      e1->x = select(e1->x, dx, up1);
-      e1->y = select(e1->y, dy, up1);
-      e1->z = select(e1->z, dz, up1);
-      e1->set |= up1;
-    }
+    *id0 = select(*id0, (int8)(k), up0);
+    *id1 = select(*id1, (int8)(k), up1);
   }
   return ~(clip & n0 & n1) & (*t1 > *t0);
 }
 
-/* The point of a piece end: the crossing direction where one was set and is well defined, scaled
- * by a power of two to the length of the edge's own point (px, py, pz) at t and turned to its
- * side; that point elsewhere. */
-inline void piece_point8(PieceEnd8 e, float8* px, float8* py, float8* pz) {
-  float8 ld = sqrt(e.x * e.x + e.y * e.y + e.z * e.z);
-  int8 use = e.set & (ld > PN_EPS_REL);
+/* Once an interval is known to matter: the crossing points at its ends (id0, id1 from
+ * clip_interval_id8: the index of the plane that set each end, -1 for none), each the cross
+ * product of the edge's unit side normal ms (plane id `self`) and that plane's, in the order of
+ * their ids. Plane k's normal is planes[k] and its id first_id + k. Done after the clipping, for
+ * the intervals that are kept, and once per distinct plane among the lanes (usually one or two)
+ * rather than at every plane that moves an end. */
+inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const EdgePlane8* planes,
+                           int first_id, int8 id0, int8 id1, int8 lanes, PieceEnd8* e0,
+                           PieceEnd8* e1) {
+  piece_end_clear8(e0);
+  piece_end_clear8(e1);
+  int8 left0 = lanes & (id0 >= 0), left1 = lanes & (id1 >= 0);
+  while (pn_any(left0 | left1)) {
+    const int k = __builtin_reduce_min(
+        min(select((int8)(INT_MAX), id0, left0), select((int8)(INT_MAX), id1, left1)));
+    const int id = first_id + k;
+    int8 at0 = left0 & (id0 == k), at1 = left1 & (id1 == k);
+    const EdgePlane8* c = &planes[k];
+    float8 px = self < id ? msx : c->mx, py = self < id ? msy : c->my, pz = self < id ? msz : c->mz;
+    float8 qx = self < id ? c->mx : msx, qy = self < id ? c->my : msy, qz = self < id ? c->mz : msz;
+    float8 dx = py * qz - pz * qy, dy = pz * qx - px * qz, dz = px * qy - py * qx;
+    e0->x = select(e0->x, dx, at0);
+    e0->y = select(e0->y, dy, at0);
+    e0->z = select(e0->z, dz, at0);
+    e0->set |= at0;
+    e1->x = select(e1->x, dx, at1);
+    e1->y = select(e1->y, dy, at1);
+    e1->z = select(e1->z, dz, at1);
+    e1->set |= at1;
+    left0 &= ~at0;
+    left1 &= ~at1;
+  }
+}
+
+/* The point of a piece end: the crossing direction where one was set and is well defined,
+ * turned to the side of the edge's own point (px, py, pz) at t; that point elsewhere. Its length
+ * does not matter: piece_term8 depends on directions only, and its cross product is accurate for
+ * vectors of any lengths. */
+inline void piece_point8(const PieceEnd8* e, float8* px, float8* py, float8* pz) {
+  int8 use = e->set & (e->x * e->x + e->y * e->y + e->z * e->z > PN_EPS_REL * PN_EPS_REL);
   if (!pn_any(use)) return;
-  float8 lp = sqrt(*px * *px + *py * *py + *pz * *pz);
-  float8 sign = select((float8)(1.0f), (float8)(-1.0f), e.x * *px + e.y * *py + e.z * *pz < 0.0f);
-  int8 k = ilogb(lp) - ilogb(ld);
-  *px = select(*px, ldexp(sign * e.x, k), use);
-  *py = select(*py, ldexp(sign * e.y, k), use);
-  *pz = select(*pz, ldexp(sign * e.z, k), use);
+  float8 sign =
+      select((float8)(1.0f), (float8)(-1.0f), e->x * *px + e->y * *py + e->z * *pz < 0.0f);
+  *px = select(*px, sign * e->x, use);
+  *py = select(*py, sign * e->y, use);
+  *pz = select(*pz, sign * e->z, use);
 }
 
 inline float8 diff_of_products8(float8 x, float8 y, float8 z, float8 w) {
@@ -957,8 +973,8 @@ inline float8 piece_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
  * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
 float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                           float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
-                          PieceEnd8 lo_end, PieceEnd8 hi_end, int8 on, int owner, float8 nx,
-                          float8 ny, float8 nz, const Contours8* cs) {
+                          const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
+                          float8 nx, float8 ny, float8 nz, const Contours8* cs) {
   if (!pn_any(on)) return 0.0f;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -970,13 +986,15 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
   float8 gx = 0.0f, gy = 0.0f, gz = 0.0f, aux = 0.0f, auy = 0.0f, auz = 0.0f, bux = 0.0f,
          buy = 0.0f, buz = 0.0f, tax = 0.0f, tay = 0.0f, taz = 0.0f, tbx = 0.0f, tby = 0.0f,
          tbz = 0.0f;
+  /* The occluders that cover part of the edge in some lane, in order, with their intervals and
+   * the crossing points at the intervals' ends (most active occluders cover none of it). */
   float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
   PieceEnd8 e0[PN_VEC_OCCLUDERS], e1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
+  int nc = 0;
   for (int v = 0; v < cs->na; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
-    piece_end_clear8(&e0[v]);
-    piece_end_clear8(&e1[v]);
+    int8 id0 = -1, id1 = -1;
     int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
     if (pn_any(covers)) {
       if (!cone_ready) {
@@ -1018,32 +1036,30 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
       int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
       if (owner < v) /* same visible side: this edge is the one kept */
         covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
-      covers &= clip_interval_end8(f0, f1, use & ~inplane, &t0, &t1, msx, msy, msz, self, e->mx,
-                                   e->my, e->mz, PN_VEC_ID_CONTOUR + k, &e0[v], &e1[v]);
+      covers &= clip_interval_id8(f0, f1, use & ~inplane, k, &t0, &t1, &id0, &id1);
     }
-    c0[v] = t0;
-    c1[v] = t1;
-    cov[v] = covers;
+    if (!pn_any(covers)) continue;
+    crossing_ends8(msx, msy, msz, self, cs->p, PN_VEC_ID_CONTOUR, id0, id1, covers, &e0[nc],
+                   &e1[nc]);
+    c0[nc] = t0;
+    c1[nc] = t1;
+    cov[nc++] = covers;
   }
   /* Visible pieces: candidate starts lo and each covering interval's end. */
   float8 starts[PN_VEC_OCCLUDERS + 1];
   int8 kept[PN_VEC_OCCLUDERS + 1];
   float8 sum = 0.0f;
-  for (int j = -1; j < cs->na; ++j) {
+  for (int j = -1; j < nc; ++j) {
     float8 st = j < 0 ? lo : c1[j];
-    PieceEnd8 st_end = j < 0 ? lo_end : e1[j];
     int8 valid = j < 0 ? on : cov[j];
     valid &= (st >= lo) & (st < hi);
     float8 end = hi;
-    PieceEnd8 end_end = hi_end;
-    for (int w = 0; w < cs->na && pn_any(valid); ++w) {
+    int8 end_at = -1; /* the covering interval whose start ends the piece; -1: hi */
+    for (int w = 0; w < nc && pn_any(valid); ++w) {
       valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
       int8 nearer = cov[w] & (c0[w] > st) & (c0[w] < end);
       end = select(end, c0[w], nearer);
-      end_end.x = select(end_end.x, e0[w].x, nearer);
-      end_end.y = select(end_end.y, e0[w].y, nearer);
-      end_end.z = select(end_end.z, e0[w].z, nearer);
-      end_end.set = select(end_end.set, e0[w].set, nearer);
+      end_at = select(end_at, (int8)(w), nearer);
     }
     for (int i = 0; i <= j && pn_any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
     starts[j + 1] = st;
@@ -1054,8 +1070,17 @@ float8 visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by,
            p0z = edge_point8(az, bz, st);
     float8 p1x = edge_point8(ax, bx, end), p1y = edge_point8(ay, by, end),
            p1z = edge_point8(az, bz, end);
-    piece_point8(st_end, &p0x, &p0y, &p0z);
-    piece_point8(end_end, &p1x, &p1y, &p1z);
+    piece_point8(j < 0 ? lo_end : &e1[j], &p0x, &p0y, &p0z);
+    PieceEnd8 end_end = *hi_end;
+    for (int w = 0; w < nc; ++w) {
+      int8 at = valid & (end_at == w);
+      if (!pn_any(at)) continue;
+      end_end.x = select(end_end.x, e0[w].x, at);
+      end_end.y = select(end_end.y, e0[w].y, at);
+      end_end.z = select(end_end.z, e0[w].z, at);
+      end_end.set = select(end_end.set, e0[w].set, at);
+    }
+    piece_point8(&end_end, &p1x, &p1y, &p1z);
     float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
     sum += select((float8)(0.0f), term, valid);
   }
@@ -1126,6 +1151,15 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   int8 cut = has_exit & has_entry;
   float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
   if (pn_any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+  EdgePlane8 sides[PN_VEC_SOURCE + 1]; /* S' side planes by id, for crossing_ends8 */
+  for (int i = 0; i < m; ++i) {
+    sides[i].mx = smx[i];
+    sides[i].my = smy[i];
+    sides[i].mz = smz[i];
+  }
+  sides[m].mx = cmx;
+  sides[m].my = cmy;
+  sides[m].mz = cmz;
 
   /* The active occluders and their edges. */
   Contours8 cs;
@@ -1241,6 +1275,12 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     for (int v = 0; v < cs.na && pn_any(cs.act[u] & ~hidden_all); ++v) {
       if (v == u) continue;
       int8 hidden = cs.act[u] & cs.act[v] & cs.whole[v] & ~hidden_all;
+      /* If every vertex of u is inside v's cone, so is u's centroid, the axis of u's bounding
+       * cone: outside v's bounding cone (grown by its margin), u is not hidden by v. Most pairs
+       * end here, before the test of u's vertices against v's planes. */
+      const BoundCone8* ku = &cs.cone[u];
+      const BoundCone8* kv = &cs.cone[v];
+      hidden &= ku->ux * kv->ux + ku->uy * kv->uy + ku->uz * kv->uz >= kv->cos_a;
       for (int k = cs.first[v]; k < cs.first[v + 1] && pn_any(hidden); ++k) {
         const EdgePlane8* e = &cs.p[k];
         if (!pn_any(hidden & e->on)) continue;
@@ -1272,11 +1312,10 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     float8 t = sh[i] / (sh[i] - sh[j]);
     float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
     sum += visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], smx[i], smy[i], smz[i], i,
-                              lo, hi, none, none, lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
+                              lo, hi, &none, &none, lanes & (a_in | b_in), -1, nx, ny, nz, &cs);
   }
-  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, cmx, cmy, cmz, PN_VEC_ID_CHORD,
-                            (float8)(0.0f), (float8)(1.0f), none, none, lanes & cut, -1, nx, ny, nz,
-                            &cs);
+  sum += visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, cmx, cmy, cmz, m, (float8)(0.0f),
+                            (float8)(1.0f), &none, &none, lanes & cut, -1, nx, ny, nz, &cs);
   /* (b) The occluders' contour edges inside S', as holes. */
   for (int u = 0; u < cs.na; ++u)
     for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
@@ -1287,9 +1326,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       float8 lb = sqrt(e->bx * e->bx + e->by * e->by + e->bz * e->bz);
       const EdgePlane8* ep = &cs.p[k];
       float8 t0 = 0.0f, t1 = 1.0f;
-      PieceEnd8 lo_end, hi_end;
-      piece_end_clear8(&lo_end);
-      piece_end_clear8(&hi_end);
+      int8 id0 = -1, id1 = -1;
       for (int i = 0; i <= m && pn_any(on); ++i) {
         float8 mx = i < m ? smx[i] : cmx, my = i < m ? smy[i] : cmy, mz = i < m ? smz[i] : cmz;
         int8 use = on & ((mx != 0.0f) | (my != 0.0f) | (mz != 0.0f));
@@ -1300,13 +1337,15 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
         int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
         on &= ~inplane;
-        on &= clip_interval_end8(f0, f1, use & ~inplane, &t0, &t1, ep->mx, ep->my, ep->mz,
-                                 PN_VEC_ID_CONTOUR + k, mx, my, mz, i < m ? i : PN_VEC_ID_CHORD,
-                                 &lo_end, &hi_end);
+        on &= clip_interval_id8(f0, f1, use & ~inplane, i, &t0, &t1, &id0, &id1);
       }
-      sum +=
-          visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
-                             PN_VEC_ID_CONTOUR + k, t0, t1, lo_end, hi_end, on, u, nx, ny, nz, &cs);
+      if (!pn_any(on)) continue;
+      PieceEnd8 lo_end, hi_end;
+      crossing_ends8(ep->mx, ep->my, ep->mz, PN_VEC_ID_CONTOUR + k, sides, 0, id0, id1, on, &lo_end,
+                     &hi_end);
+      sum += visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
+                                PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, nx, ny, nz,
+                                &cs);
     }
   return select((float8)(0.0f), fmax(sum, 0.0f), lanes);
 }
