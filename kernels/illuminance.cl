@@ -552,7 +552,6 @@ float visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const
   lo[0] = 0.0f;
   hi[0] = 1.0f;
   lo_id[0] = hi_id[0] = PN_ID_VERTEX;
-  const float3 me = m_self;
   const float la = length(a), lb = length(b);
 
   if (owner >= 0) { /* an occluder edge counts only inside S' */
@@ -581,7 +580,7 @@ float visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const
       if (no_plane(m)) continue; /* P on the edge's line */
       float f0 = dot(m, a), f1 = dot(m, b);
       if (in_plane(f0, f1, la, lb)) {
-        bool same_side = dot(me, m) > 0.0f;
+        bool same_side = dot(m_self, m) > 0.0f;
         if (same_side && owner < v) covers = false; /* this edge is the one kept */
         continue;                                   /* otherwise the plane does not limit */
       }
