@@ -9,8 +9,10 @@
 #include <string>
 
 #include "bench/open_office.hpp"
+#include "geometry/tolerance.hpp"
 #include "lighting/grid_evaluation.hpp"
 #include "lighting/illuminance_engine.hpp"
+#include "reference/exact_illuminance.hpp"
 #include "reference/pyramid_oracle.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "sanitized_build.hpp"
@@ -41,123 +43,112 @@ Scene withoutSolids(Scene scene) {
   return scene;
 }
 
-// Culling changes which occluders a sample considers, never the answer: per point, the two
-// paths agree to 1e-6 of the point's unoccluded illuminance (the size of the terms the kernel
-// sums in float; a heavily shaded point's E is a small difference of such terms). This holds the
-// culling itself (volumes, candidates) with the plain path's arithmetic: apertures off and the
-// scalar penumbra path. The fast paths change the arithmetic (Culling.FastPaths* below).
-void expectCullingChangesNothing(const std::string& file) {
-  const Scene scene = loadScene(file);
+// Culling changes which occluders a sample considers, never the answer: per point, the default
+// path and the plain one (--no-culling) agree to 1e-6 of the point's unoccluded illuminance, the
+// issue's criterion. E_unoccluded is the scale because it is the size of the terms the kernel sums
+// in float: a heavily shaded point's E is a small difference of such terms.
+//
+// Each path errs by its float rounding, and the two differ by the sum of both. Held to 1e-6 since
+// every sum of contour terms and of faces is compensated (kernels/illuminance.cl, PnSum). Measured
+// (defaults): office 4.0e-7, open office 8.3e-7, CIE 171 cases 1.2e-7; with plain sums and
+// coordinates from the room's corner (lighting/kernel_scene.hpp) 4.5e-7, 1.25e-6 and 1.7e-7.
+// `culling` alone (apertures off, the scalar penumbra path: the plain path's arithmetic) is held
+// the same way: 7.6e-7 on the open office.
+//
+// Both paths are also held against the exact reference in double (reference/exact_illuminance):
+// to kKernelRelative of E_unoccluded at every point. Measured: 1.2e-6 on the open office, 4.4e-6
+// at 400 solids. With coordinates from the room's corner it was 5.4e-6 on the open office, 4.0e-6
+// of it the rounding of the coordinates to float: 2 cm from a chair back, a shadow edge on a panel
+// 2.3 m away moves a hundred times as far as the rounding moves the point.
+constexpr double kPathAgreement = 1e-6;
+// The sanitizer build checks the exact reference at every 16th point (it runs about 20× slower).
+constexpr std::size_t kExactStride = kSanitizedBuild ? 16 : 1;
+
+void expectCullingChangesNothing(const Scene& scene, const std::string& file,
+                                 EngineOptions culling = {}, double agreement = kPathAgreement) {
   const std::vector<SamplePoint> points = allGridPoints(scene);
   ASSERT_FALSE(points.empty()) << file;
-  IlluminanceEngine culled(cpuDevice(), scene, EngineOptions{true, false, false});
-  IlluminanceEngine plain(cpuDevice(), scene, EngineOptions{false});
-  IlluminanceEngine open(cpuDevice(), withoutSolids(scene));
-  const std::vector<double> a = culled.illuminance(points);
-  const std::vector<double> b = plain.illuminance(points);
-  const std::vector<double> scale = open.illuminance(points);
-  double emax = 0.0;
-  for (double e : scale) emax = std::max(emax, e);
-  double worst = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const double bound = 1e-6 * scale[i] + 1e-9 * emax;
-    worst = std::max(worst, std::abs(a[i] - b[i]) / std::max(scale[i], 1e-12));
-    EXPECT_LE(std::abs(a[i] - b[i]), bound)
-        << file << " point " << i << " at (" << points[i].position.transpose() << ")";
-  }
-  std::printf("%s: %zu points, worst |culled - plain| / E_unoccluded = %.2e\n", file.c_str(),
-              points.size(), worst);
-}
-
-TEST(Culling, SameIlluminanceOnTheOffice) {
-  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/office.yaml");
-}
-
-TEST(Culling, SameIlluminanceOnTheOpenOffice) {
-  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/open-office.yaml");
-}
-
-// The defaults add apertures (a window's visible rectangle instead of the sky minus the reveals)
-// and the eight-lane penumbra path (the same method in float8, with its own rounding). Each path
-// errs by its float rounding, which at a distant, mostly hidden source is about 1e-6 of
-// E_unoccluded (Aperture.MeetsTheExactRectangleInAnEmptyRoom: culled 1.5e-6, plain 2.9e-6), so
-// two of them differ by up to twice that. Held: the two agree to kFastPathAgreement everywhere
-// (measured: office 4.5e-7, open office 1.25e-6, 400 solids 9.4e-7; before visible contours
-// closed exactly at crossings, 6.1e-7, 2.7e-6 and 5.1e-6). The points above 1e-6 are counted.
-// Printed, not asserted: where they disagree most, both against the reference (n = 1024), whose
-// own error (about 1e-6 of each source's unoccluded value) is as large as the disagreement.
-constexpr double kFastPathAgreement = 2e-6;
-void expectFastPathsAsAccurate(const Scene& scene, const std::string& file) {
-  const std::vector<SamplePoint> points = allGridPoints(scene);
-  const std::vector<double> a = IlluminanceEngine(cpuDevice(), scene).illuminance(points);
+  const std::vector<double> a = IlluminanceEngine(cpuDevice(), scene, culling).illuminance(points);
   const std::vector<double> b =
       IlluminanceEngine(cpuDevice(), scene, EngineOptions{false}).illuminance(points);
   const std::vector<double> scale =
       IlluminanceEngine(cpuDevice(), withoutSolids(scene)).illuminance(points);
+  // A point no source reaches has scale 0: both paths must give exactly 0 there.
+  auto relative = [&](double difference, std::size_t i) {
+    return std::abs(difference) / std::max(scale[i], 1e-300);
+  };
   double worst = 0.0;
-  int overOneMillionth = 0;
-  std::vector<std::size_t> order(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
-    order[i] = i;
-    worst = std::max(worst, std::abs(a[i] - b[i]) / scale[i]);
-    if (std::abs(a[i] - b[i]) > 1e-6 * scale[i]) ++overOneMillionth;
-    EXPECT_LE(std::abs(a[i] - b[i]), kFastPathAgreement * scale[i])
+    worst = std::max(worst, relative(a[i] - b[i], i));
+    EXPECT_LE(std::abs(a[i] - b[i]), agreement * scale[i])
         << file << " point " << i << " at (" << points[i].position.transpose() << ")";
   }
-  const std::size_t checked = std::min<std::size_t>(10, points.size());
-  std::partial_sort(order.begin(), order.begin() + checked, order.end(),
-                    [&](std::size_t i, std::size_t j) {
-                      return std::abs(a[i] - b[i]) / scale[i] > std::abs(a[j] - b[j]) / scale[j];
-                    });
-  std::vector<SamplePoint> worstPoints;
-  for (std::size_t k = 0; k < checked; ++k) worstPoints.push_back(points[order[k]]);
-  const std::vector<double> reference =
-      referenceIlluminance(scene, worstPoints, referenceSamples(1024));
+  std::vector<SamplePoint> checked;
+  for (std::size_t i = 0; i < points.size(); i += kExactStride) checked.push_back(points[i]);
+  const std::vector<double> exact = exactIlluminance(scene, checked)[0];
   double culledError = 0.0, plainError = 0.0;
-  for (std::size_t k = 0; k < checked; ++k) {
-    const std::size_t i = order[k];
-    const double ec = std::abs(a[i] - reference[k]) / scale[i];
-    const double ep = std::abs(b[i] - reference[k]) / scale[i];
+  for (std::size_t k = 0; k < checked.size(); ++k) {
+    const std::size_t i = k * kExactStride;
+    const double ec = relative(a[i] - exact[k], i);
+    const double ep = relative(b[i] - exact[k], i);
     culledError = std::max(culledError, ec);
     plainError = std::max(plainError, ep);
+    EXPECT_LE(ec, Tolerance::kKernelRelative) << file << " culled at " << i;
+    EXPECT_LE(ep, Tolerance::kKernelRelative) << file << " plain at " << i;
   }
   std::printf(
-      "%s: worst |culled - plain| / E_unoccluded = %.2e (%d of %zu points above 1e-6); at the %zu "
-      "worst points, |E - reference| / E_unoccluded up to %.2e culled, %.2e plain\n",
-      file.c_str(), worst, overOneMillionth, points.size(), checked, culledError, plainError);
+      "%s: %zu points, worst |culled - plain| / E_unoccluded = %.2e; against the exact reference "
+      "(%zu points) %.2e culled, %.2e plain\n",
+      file.c_str(), points.size(), worst, checked.size(), culledError, plainError);
 }
 
-void expectFastPathsAsAccurate(const std::string& file) {
-  expectFastPathsAsAccurate(loadScene(file), file);
+void expectCullingChangesNothing(const std::string& file, EngineOptions culling = {}) {
+  expectCullingChangesNothing(loadScene(file), file, culling);
 }
 
+// Culling alone: apertures off and the scalar penumbra path, the plain path's arithmetic.
+constexpr EngineOptions kCullingOnly{true, false, false};
+
+TEST(Culling, SameIlluminanceOnTheOffice) {
+  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/office.yaml", kCullingOnly);
+}
+
+TEST(Culling, SameIlluminanceOnTheOpenOffice) {
+  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/open-office.yaml", kCullingOnly);
+}
+
+// The defaults add apertures (a window's visible rectangle instead of the sky minus the reveals)
+// and the eight-lane penumbra path (the same method in float8, with its own rounding).
 TEST(Culling, FastPathsOnTheOffice) {
-  expectFastPathsAsAccurate(PENUMBRA_SOURCE_DIR "/data/office.yaml");
+  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/office.yaml");
 }
 
 TEST(Culling, FastPathsOnTheOpenOffice) {
-  expectFastPathsAsAccurate(PENUMBRA_SOURCE_DIR "/data/open-office.yaml");
+  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/data/open-office.yaml");
 }
 
 // The open office at 400 solids (bench/open_office.hpp, culling_bench's largest scene): work-items
 // whose lanes see 16 to 30 occluders at once, so the eight-lane path's large unions, its
-// hidden-occluder drops and its bounding-cone skips all run. There the eight-lane path takes lanes
-// the scalar path took before (measured: 9.4e-7 apart; at the ten points where they disagree most,
-// 1.6e-6 culled and 2.0e-6 plain from the reference).
+// hidden-occluder drops and its bounding-cone skips all run. Not an example scene: held to twice
+// the criterion (measured 1.02e-6 at one point of 7 624, (11.35, 5.35) m, where the default path
+// lies 2.6e-7 from the exact value and the plain path 7.6e-7).
+constexpr double kDenseAgreement = 2 * kPathAgreement;
+
 TEST(Culling, FastPathsOnTheDenseOpenOffice) {
-  expectFastPathsAsAccurate(parseScene(bench::openOfficeYaml(400), "open-office-400.yaml"),
-                            "open office, 400 solids");
+  expectCullingChangesNothing(parseScene(bench::openOfficeYaml(400), "open-office-400.yaml"),
+                              "open office, 400 solids", {}, kDenseAgreement);
 }
 
 class CullingOnCie171 : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(CullingOnCie171, SameIlluminance) {
-  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/tests/validation/cie171/" + GetParam() +
-                              ".yaml");
+  expectCullingChangesNothing(
+      PENUMBRA_SOURCE_DIR "/tests/validation/cie171/" + GetParam() + ".yaml", kCullingOnly);
 }
 
 TEST_P(CullingOnCie171, FastPathsAsAccurate) {
-  expectFastPathsAsAccurate(PENUMBRA_SOURCE_DIR "/tests/validation/cie171/" + GetParam() + ".yaml");
+  expectCullingChangesNothing(PENUMBRA_SOURCE_DIR "/tests/validation/cie171/" + GetParam() +
+                              ".yaml");
 }
 
 INSTANTIATE_TEST_SUITE_P(Validation, CullingOnCie171,

@@ -1,7 +1,11 @@
 // Occlusion by the visible-segment method (kernel, float) against the independent reference
 // (host, double, ~n² lattice samples per face with exact ray tests): issue 2, item 6.
 // Criterion: max |E − E_ref| ≤ 2e-3 × E_unoccluded at every point, with n ≥ 1024
-// (256 in the sanitizer build: tests/sanitized_build.hpp).
+// (256 in the sanitizer build: tests/sanitized_build.hpp). That criterion is the sampled
+// reference's; against the exact reference (reference/exact_illuminance: the occluders' shadows
+// projected on each source's plane, double) the kernel is also held to kKernelRelative
+// (1e-5) of E_unoccluded, which the float kernel meets with a margin of ten or more everywhere
+// but at points on a solid's vertical face (PointsTouchingAnotherSolid).
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
@@ -9,7 +13,9 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "geometry/tolerance.hpp"
 #include "lighting/illuminance_engine.hpp"
+#include "reference/exact_illuminance.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "sanitized_build.hpp"
 #include "test_device.hpp"
@@ -23,14 +29,16 @@ constexpr int kReferenceN = 1024;
 constexpr double kOcclusionTolerance = 2e-3;  // of the unoccluded value at the same point
 
 struct Comparison {
-  double worst = 0.0;  // max |E − E_ref| / E_unoccluded
-  int shaded = 0;      // points where the occluders remove more than 1 % of the light
-  int umbra = 0;       // points with E_ref = 0 although the source is in front
+  double worst = 0.0;       // max |E − E_ref| / E_unoccluded
+  double worstExact = 0.0;  // max |E − E_exact| / E_unoccluded
+  int shaded = 0;           // points where the occluders remove more than 1 % of the light
+  int umbra = 0;            // points with E_ref = 0 although the source is in front
 };
 
 // Compares kernel and reference at every point and counts the shadow classes it went through,
 // so that a scene meant to test penumbrae really has some.
-Comparison compare(const Scene& scene, const std::vector<SamplePoint>& points) {
+Comparison compare(const Scene& scene, const std::vector<SamplePoint>& points,
+                   double exactTolerance = Tolerance::kKernelRelative) {
   Scene open = scene;
   open.solids.clear();
   IlluminanceEngine engine(cpuDevice(), scene);
@@ -39,6 +47,7 @@ Comparison compare(const Scene& scene, const std::vector<SamplePoint>& points) {
   const std::vector<double> unoccluded = openEngine.illuminance(points);
   const std::vector<double> reference =
       referenceIlluminance(scene, points, referenceSamples(kReferenceN));
+  const std::vector<double> exact = exactIlluminance(scene, points)[0];
   Comparison c;
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (unoccluded[i] <= 0.0) continue;
@@ -47,6 +56,11 @@ Comparison compare(const Scene& scene, const std::vector<SamplePoint>& points) {
         << "point " << points[i].position.transpose() << ": E = " << e[i] << " lx, reference "
         << reference[i] << " lx, unoccluded " << unoccluded[i] << " lx";
     c.worst = std::max(c.worst, error);
+    const double exactError = std::abs(e[i] - exact[i]) / unoccluded[i];
+    EXPECT_LE(exactError, exactTolerance)
+        << "point " << points[i].position.transpose() << ": E = " << e[i] << " lx, exact "
+        << exact[i] << " lx, unoccluded " << unoccluded[i] << " lx";
+    c.worstExact = std::max(c.worstExact, exactError);
     if (std::getenv("PENUMBRA_TEST_VERBOSE"))
       std::printf("    %s  E %.6g  ref %.6g  rel %.2e\n",
                   fmt::format("{:.3f} {:.3f} {:.3f}", points[i].position.x(),
@@ -57,8 +71,10 @@ Comparison compare(const Scene& scene, const std::vector<SamplePoint>& points) {
     if (reference[i] == 0.0) ++c.umbra;
   }
   // Reported, not asserted beyond the criterion above: the figure for the closing note.
-  std::printf("  %zu points, %d shaded, %d in umbra, max |E - E_ref| / E_unoccluded = %.2e\n",
-              points.size(), c.shaded, c.umbra, c.worst);
+  std::printf(
+      "  %zu points, %d shaded, %d in umbra, max |E - E_ref| / E_unoccluded = %.2e, "
+      "max |E - E_exact| / E_unoccluded = %.2e\n",
+      points.size(), c.shaded, c.umbra, c.worst, c.worstExact);
   return c;
 }
 
@@ -177,7 +193,10 @@ TEST(Occlusion, PointsTouchingAnotherSolid) {
   }
   // On the cabinet's bottom edge, on the floor (the floor is its solid): a contact on an edge.
   points.push_back({Vec3(0.2, 0.1, 0.0), Vec3::UnitZ(), 0});
-  const Comparison c = compare(scene, points);
+  // A point on a side face sees only the sliver of the panel above its horizon, and the kernel
+  // errs most there (measured 1.3e-4 of E_unoccluded at (0.5, -0.4, 0.1), both references
+  // agreeing to 1e-6): held to the issue's criterion only.
+  const Comparison c = compare(scene, points, kOcclusionTolerance);
   EXPECT_GT(c.umbra, 8);
   EXPECT_GT(c.shaded, 20);
 }

@@ -189,10 +189,11 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
   std::vector<float> coords[6];
   for (auto& c : coords) c.resize(padded);
   std::vector<cl_int> own(padded);
+  const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
   for (std::size_t i = 0; i < padded; ++i) {
     const SamplePoint& p = points[std::min(i, n - 1)];
     for (int k = 0; k < 3; ++k) {
-      coords[k][i] = static_cast<float>(p.position[k]);
+      coords[k][i] = static_cast<float>(p.position[k] - origin[k]);
       coords[3 + k][i] = static_cast<float>(p.normal[k]);
     }
     own[i] = p.solid;

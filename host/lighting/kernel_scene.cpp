@@ -27,9 +27,15 @@ cl_float4 toFloat4(const Vec3& v, double w = 0.0) {
   return f;
 }
 
-cl_float4 toFloat4(const Plane& plane) {
-  return toFloat4(plane.normal, plane.offset);
-}
+// Positions and planes relative to the kernel's origin c: x − c, and n·x = w becomes
+// n·(x − c) = w − n·c.
+struct Relative {
+  Vec3 origin;
+  cl_float4 point(const Vec3& x, double w = 0.0) const { return toFloat4(x - origin, w); }
+  cl_float4 plane(const Plane& p) const {
+    return toFloat4(p.normal, p.offset - p.normal.dot(origin));
+  }
+};
 
 cl_float4 toFloat4(const std::array<double, 4>& r) {
   cl_float4 f;
@@ -39,7 +45,8 @@ cl_float4 toFloat4(const std::array<double, 4>& r) {
 
 // The box's corners rounded inwards to float, so that a float point the kernel finds inside is
 // inside the box.
-void roomBox(const BoundingBox& box, cl_float4& lo, cl_float4& hi) {
+void roomBox(const BoundingBox& room, const Relative& r, cl_float4& lo, cl_float4& hi) {
+  const BoundingBox box{room.lo - r.origin, room.hi - r.origin};
   for (int i = 0; i < 3; ++i) {
     float l = static_cast<float>(box.lo[i]), h = static_cast<float>(box.hi[i]);
     if (l < box.lo[i]) l = std::nextafter(l, std::numeric_limits<float>::infinity());
@@ -50,25 +57,32 @@ void roomBox(const BoundingBox& box, cl_float4& lo, cl_float4& hi) {
   lo.s[3] = hi.s[3] = 0.0f;
 }
 
-PnAperture packAperture(const Aperture& a) {
+// Rectangles (u0, u1, v0, v1) in coordinates u = x·axisU, v = x·axisV, made relative.
+std::array<double, 4> relativeRect(const std::array<double, 4>& rect, const Aperture& a,
+                                   const Relative& r) {
+  const double u = a.axisU.dot(r.origin), v = a.axisV.dot(r.origin);
+  return {rect[0] - u, rect[1] - u, rect[2] - v, rect[3] - v};
+}
+
+PnAperture packAperture(const Aperture& a, const Relative& r) {
   PnAperture p{};
-  p.plane = toFloat4(a.plane);
-  roomBox(a.room, p.roomLo, p.roomHi);
+  p.plane = r.plane(a.plane);
+  roomBox(a.room, r, p.roomLo, p.roomHi);
   p.axisU = toFloat4(a.axisU);
   p.axisV = toFloat4(a.axisV);
-  p.sourceRect = toFloat4(a.sourceRect);
-  p.openingRect = toFloat4(a.openingRect);
+  p.sourceRect = toFloat4(relativeRect(a.sourceRect, a, r));
+  p.openingRect = toFloat4(relativeRect(a.openingRect, a, r));
   p.thickness.s[0] = static_cast<float>(a.plane.offset - a.sourceDepth);
   return p;
 }
 
-int appendPlanes(KernelScene& packed, const std::vector<Plane>& planes) {
-  for (const Plane& p : planes) packed.planes.push_back(toFloat4(p));
+int appendPlanes(KernelScene& packed, const std::vector<Plane>& planes, const Relative& r) {
+  for (const Plane& p : planes) packed.planes.push_back(r.plane(p));
   return static_cast<int>(planes.size());
 }
 
 void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const ConvexPolygon& face,
-                    const Tolerance& tolerance) {
+                    const Tolerance& tolerance, const Relative& r) {
   const ConvexPolyhedron& shape = caster.shape;
   if (shape.faces().size() > PN_MAX_OCCLUDER_FACES)
     throw std::runtime_error(fmt::format("a solid has {} faces; the kernel handles at most {}",
@@ -78,16 +92,16 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
   o.behindAperture = caster.behindAperture ? 1 : 0;
   o.firstPlane = static_cast<int>(packed.planes.size());
   o.planeCount = static_cast<int>(shape.faces().size());
-  for (const auto& f : shape.faces()) packed.planes.push_back(toFloat4(f.plane));
+  for (const auto& f : shape.faces()) packed.planes.push_back(r.plane(f.plane));
   o.firstSeparating = static_cast<int>(packed.planes.size());
   for (const auto& f : shape.faces())
     if (nishitaH(f.plane, face, tolerance.length) == Side::Positive)
-      packed.planes.push_back(toFloat4(f.plane));
+      packed.planes.push_back(r.plane(f.plane));
   o.separatingCount = static_cast<int>(packed.planes.size()) - o.firstSeparating;
   o.firstPenumbra = static_cast<int>(packed.planes.size());
-  o.penumbraCount = appendPlanes(packed, caster.volume.penumbra);
+  o.penumbraCount = appendPlanes(packed, caster.volume.penumbra, r);
   o.firstUmbra = static_cast<int>(packed.planes.size());
-  o.umbraCount = appendPlanes(packed, caster.volume.umbra);
+  o.umbraCount = appendPlanes(packed, caster.volume.umbra, r);
   o.firstEdge = static_cast<int>(packed.edges.size());
   o.edgeCount = static_cast<int>(shape.edges().size());
   for (const auto& e : shape.edges())
@@ -97,12 +111,12 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
   const Vec3 centre = shape.centroid();
   double radius = 0.0;
   for (const Vec3& v : shape.vertices()) {
-    packed.occluderVertices.push_back(toFloat4(v));
+    packed.occluderVertices.push_back(r.point(v));
     radius = std::max(radius, (v - centre).norm());
   }
   // The sphere is a culling bound: grow it by the kernel's tolerance so float rounding of the
   // centre never makes it miss a corner.
-  o.bound = toFloat4(centre, radius + packed.epsLength);
+  o.bound = r.point(centre, radius + packed.epsLength);
   packed.occluders.push_back(o);
 }
 
@@ -110,6 +124,9 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
 
 KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
   KernelScene packed;
+  const BoundingBox bounds = scene.bounds();
+  if (!bounds.empty()) packed.origin = 0.5 * (bounds.lo + bounds.hi);
+  const Relative r{packed.origin};
   packed.epsLength = static_cast<float>(Tolerance::kKernelRelative * std::max(scene.size(), 1.0));
   packed.sourceCount = static_cast<int>(scene.sources.size());
   for (const EmittingFaceShadows& emitting : shadows.faces) {
@@ -120,20 +137,20 @@ KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
           fmt::format("source '{}' has a face with {} vertices; the kernel handles at most {}",
                       source.name, face.size(), PN_MAX_SOURCE_VERTICES));
     PnSourceFace f{};
-    f.plane = toFloat4(face.plane());
+    f.plane = r.plane(face.plane());
     f.firstVertex = static_cast<int>(packed.sourceVertices.size());
     f.vertexCount = face.size();
-    for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(toFloat4(v));
+    for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
     f.halfLuminance = static_cast<float>(0.5 * source.luminance);
     f.source = emitting.source;
     f.aperture = -1;
     if (emitting.aperture) {
       f.aperture = static_cast<int>(packed.apertures.size());
-      packed.apertures.push_back(packAperture(*emitting.aperture));
+      packed.apertures.push_back(packAperture(*emitting.aperture, r));
     }
     f.firstOccluder = static_cast<int>(packed.occluders.size());
     for (const ShadowCaster& caster : emitting.casters)
-      appendOccluder(packed, caster, face, shadows.tolerance);
+      appendOccluder(packed, caster, face, shadows.tolerance, r);
     f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
     packed.faces.push_back(f);
   }

@@ -61,15 +61,11 @@ double Source::emittingArea() const {
   return area;
 }
 
-double Scene::size() const {
+BoundingBox Scene::bounds() const {
   // Calculation points count as geometry here: the tolerance derived from this size must also
   // be fine enough for them (a grid may reach beyond every solid, or a scene may have no solid).
-  Vec3 low = Vec3::Constant(std::numeric_limits<double>::infinity());
-  Vec3 high = -low;
-  const auto add = [&](const Vec3& p) {
-    low = low.cwiseMin(p);
-    high = high.cwiseMax(p);
-  };
+  BoundingBox box;
+  const auto add = [&](const Vec3& p) { box.add(p); };
   for (const Solid& solid : solids)
     std::for_each(solid.shape.vertices().begin(), solid.shape.vertices().end(), add);
   for (const Source& source : sources) {
@@ -88,7 +84,12 @@ double Scene::size() const {
                       r = static_cast<std::size_t>(grid.rows);
     for (std::size_t i : {std::size_t{0}, c - 1, (r - 1) * c, r * c - 1}) add(grid.position(i));
   }
-  return (high.array() >= low.array()).all() ? (high - low).norm() : 0.0;
+  return box;
+}
+
+double Scene::size() const {
+  const BoundingBox box = bounds();
+  return box.empty() ? 0.0 : (box.hi - box.lo).norm();
 }
 
 }  // namespace penumbra

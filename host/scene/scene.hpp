@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/bounding_box.hpp"
 #include "geometry/convex_polyhedron.hpp"
 #include "scene/parameters.hpp"
 
@@ -107,7 +108,9 @@ struct Scene {
   std::optional<Room> room;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
 
-  // Diagonal of the bounding box of all geometry (m); the scale of Tolerance.
+  // The bounding box of all geometry: solids, sources and calculation points (m).
+  BoundingBox bounds() const;
+  // Its diagonal (m); the scale of Tolerance.
   double size() const;
 };
 
