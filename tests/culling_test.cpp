@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "bench/open_office.hpp"
@@ -19,6 +20,9 @@
 #include "scene/scene_loader.hpp"
 #include "shadow/receiver_candidates.hpp"
 #include "shadow/scene_shadows.hpp"
+#include "study/study_cases.hpp"
+#include "study/study_plan.hpp"
+#include "study/study_reader.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"
 
@@ -48,24 +52,32 @@ Scene withoutSolids(Scene scene) {
 // issue's criterion. E_unoccluded is the scale because it is the size of the terms the kernel sums
 // in float: a heavily shaded point's E is a small difference of such terms.
 //
-// Each path errs by its float rounding, and the two differ by the sum of both. Held to 1e-6 since
-// every sum of contour terms and of faces is compensated (kernels/illuminance.cl, PnSum). Measured
-// (defaults): office 4.0e-7, open office 8.3e-7, CIE 171 cases 1.2e-7; with plain sums and
-// coordinates from the room's corner (lighting/kernel_scene.hpp) 4.5e-7, 1.25e-6 and 1.7e-7.
-// `culling` alone (apertures off, the scalar penumbra path: the plain path's arithmetic) is held
-// the same way: 7.6e-7 on the open office.
+// Each path errs by its float rounding, and the two differ by the sum of both. Held to 1e-6 on
+// the example scenes since every sum of contour terms and of faces is compensated
+// (kernels/illuminance.cl, PnSum) and positions are relative to the scene's centre
+// (lighting/kernel_scene.hpp). Measured (defaults): office 4.0e-7, open office 8.3e-7, CIE 171
+// cases 1.2e-7; before, 4.5e-7, 1.25e-6 and 1.7e-7. `culling` alone (apertures off, the scalar
+// penumbra path: the plain path's arithmetic) is held the same way: 7.6e-7 on the open office.
 //
 // Both paths are also held against the exact reference in double (reference/exact_illuminance):
 // to kKernelRelative of E_unoccluded at every point. Measured: 1.2e-6 on the open office, 4.4e-6
 // at 400 solids. With coordinates from the room's corner it was 5.4e-6 on the open office, 4.0e-6
 // of it the rounding of the coordinates to float: 2 cm from a chair back, a shadow edge on a panel
 // 2.3 m away moves a hundred times as far as the rounding moves the point.
+//
+// Variants that are not example scenes (the bench's 400-solid office, the example studies'
+// cases) are held to the exact reference only, and their agreement is printed: it is the float
+// floor of the two paths, not a property of culling. The daylight-only window-width cases show
+// it: the sky's bottom edge 0.1 m above the work plane's horizon makes its terms cancel, each
+// path errs up to 1.7e-6 of the sky's light, and the two differ by up to 2.0e-6.
 constexpr double kPathAgreement = 1e-6;
 // The sanitizer build checks the exact reference at every 16th point (it runs about 20× slower).
 constexpr std::size_t kExactStride = kSanitizedBuild ? 16 : 1;
 
+// agreement: the bound on |culled - plain| / E_unoccluded, or none (printed only).
 void expectCullingChangesNothing(const Scene& scene, const std::string& file,
-                                 EngineOptions culling = {}, double agreement = kPathAgreement) {
+                                 EngineOptions culling = {},
+                                 std::optional<double> agreement = kPathAgreement) {
   const std::vector<SamplePoint> points = allGridPoints(scene);
   ASSERT_FALSE(points.empty()) << file;
   const std::vector<double> a = IlluminanceEngine(cpuDevice(), scene, culling).illuminance(points);
@@ -78,10 +90,14 @@ void expectCullingChangesNothing(const Scene& scene, const std::string& file,
     return std::abs(difference) / std::max(scale[i], 1e-300);
   };
   double worst = 0.0;
+  int overCriterion = 0;
   for (std::size_t i = 0; i < points.size(); ++i) {
     worst = std::max(worst, relative(a[i] - b[i], i));
-    EXPECT_LE(std::abs(a[i] - b[i]), agreement * scale[i])
-        << file << " point " << i << " at (" << points[i].position.transpose() << ")";
+    overCriterion += relative(a[i] - b[i], i) > kPathAgreement;
+    if (agreement) {
+      EXPECT_LE(std::abs(a[i] - b[i]), *agreement * scale[i])
+          << file << " point " << i << " at (" << points[i].position.transpose() << ")";
+    }
   }
   std::vector<SamplePoint> checked;
   for (std::size_t i = 0; i < points.size(); i += kExactStride) checked.push_back(points[i]);
@@ -97,9 +113,9 @@ void expectCullingChangesNothing(const Scene& scene, const std::string& file,
     EXPECT_LE(ep, Tolerance::kKernelRelative) << file << " plain at " << i;
   }
   std::printf(
-      "%s: %zu points, worst |culled - plain| / E_unoccluded = %.2e; against the exact reference "
-      "(%zu points) %.2e culled, %.2e plain\n",
-      file.c_str(), points.size(), worst, checked.size(), culledError, plainError);
+      "%s: %zu points, worst |culled - plain| / E_unoccluded = %.2e (%d above 1e-6); against the "
+      "exact reference (%zu points) %.2e culled, %.2e plain\n",
+      file.c_str(), points.size(), worst, overCriterion, checked.size(), culledError, plainError);
 }
 
 void expectCullingChangesNothing(const std::string& file, EngineOptions culling = {}) {
@@ -129,14 +145,27 @@ TEST(Culling, FastPathsOnTheOpenOffice) {
 
 // The open office at 400 solids (bench/open_office.hpp, culling_bench's largest scene): work-items
 // whose lanes see 16 to 30 occluders at once, so the eight-lane path's large unions, its
-// hidden-occluder drops and its bounding-cone skips all run. Not an example scene: held to twice
-// the criterion (measured 1.02e-6 at one point of 7 624, (11.35, 5.35) m, where the default path
-// lies 2.6e-7 from the exact value and the plain path 7.6e-7).
-constexpr double kDenseAgreement = 2 * kPathAgreement;
-
+// hidden-occluder drops and its bounding-cone skips all run. Not an example scene (measured:
+// 1.02e-6 apart at one point of 7 624, (11.35, 5.35) m, where the default path lies 2.6e-7 and
+// the plain one 7.6e-7 from the exact value).
 TEST(Culling, FastPathsOnTheDenseOpenOffice) {
   expectCullingChangesNothing(parseScene(bench::openOfficeYaml(400), "open-office-400.yaml"),
-                              "open office, 400 solids", {}, kDenseAgreement);
+                              "open office, 400 solids", {}, std::nullopt);
+}
+
+// The example studies' cases are the scenes the bundled example and the sweeps compute: every
+// window width, panel spacing and flux, floor reflectance of the office (37 cases).
+TEST(Culling, SameIlluminanceOnEveryCaseOfTheExampleStudies) {
+  int cases = 0;
+  for (const char* name : {"window-width", "panel-spacing-flux", "floor-reflectance"}) {
+    const Study study = loadStudy(PENUMBRA_SOURCE_DIR "/studies/" + std::string(name) + ".yaml");
+    for (const StudyCase& c : studyCases(study)) {
+      const Scene scene = loadCaseScene(study, PlannedCase{c.id, c.values, ""});
+      expectCullingChangesNothing(scene, std::string(name) + " " + c.id, {}, std::nullopt);
+      ++cases;
+    }
+  }
+  EXPECT_EQ(cases, 37);
 }
 
 class CullingOnCie171 : public ::testing::TestWithParam<std::string> {};
