@@ -13,8 +13,10 @@
 // code at n = 256, only fewer times round its innermost loop. Its error there is 2e-5 of
 // E_unoccluded on the CIE 171 scenes (host/reference/reference_illuminance.cpp), a hundred times
 // inside the 2e-3 criterion these tests hold the kernel to, but not at every point: 1 mm in front
-// of an opening's edge it erred 2.7e-3, so aperture_test keeps n = 1024 in every build. The Release
-// build, which holds the numbers, keeps every n as asked.
+// of an opening's edge it erred 2.7e-3, so aperture_test samples it at n = 1024 or, in the
+// sanitizer build, not at all (the exact reference, host/reference/exact_illuminance, holds the
+// kernel there to 1e-5 instead, in milliseconds). The Release build, which holds the numbers,
+// keeps every n as asked.
 #include <algorithm>
 
 namespace penumbra::testing {
