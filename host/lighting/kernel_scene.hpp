@@ -30,8 +30,8 @@ struct KernelScene {
 };
 
 // The kernel's copy of `shadows`, with the luminance of each face from `scene`, relative to the
-// centre of scene.bounds(). Throws
-// std::runtime_error when a face or solid exceeds the kernel's limits (shared_types.h).
+// centre of scene.bounds(). Throws std::runtime_error when a face or solid exceeds the kernel's
+// limits (shared_types.h).
 KernelScene packScene(const Scene& scene, const SceneShadows& shadows);
 
 }  // namespace penumbra
