@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "geometry/tolerance.hpp"
 
@@ -182,22 +183,44 @@ bool allBeyond(const Vec3& normal, double offset, const std::vector<Vec3>& point
                      [&](const Vec3& x) { return normal.dot(x) - offset > margin; });
 }
 
-// Whether a solid cannot meet the pyramid conv(p, face'): a face plane of the solid with the
-// whole pyramid outside it, or a side plane of the pyramid with the whole solid outside it.
-bool separated(const ConvexPolyhedron& solid, const Vec3& p, const std::vector<Vec3>& face,
-               const Vec3& inward, double tolerance) {
-  std::vector<Vec3> pyramid = face;
-  pyramid.push_back(p);
-  for (const auto& f : solid.faces())
-    if (allBeyond(f.plane.normal, f.plane.offset, pyramid, tolerance)) return true;
+// The pyramid conv(p, face'): its points and its side planes, outward. Built once per point and
+// face; every solid is tested against it.
+struct Pyramid {
+  std::vector<Vec3> points;
+  std::vector<Plane> sides;
+};
+
+Pyramid pyramidOf(const Vec3& p, const std::vector<Vec3>& face, const Vec3& inward) {
+  Pyramid pyramid{face, {}};
+  pyramid.points.push_back(p);
   for (std::size_t i = 0; i < face.size(); ++i) {
     Vec3 m = (face[i] - p).cross(face[(i + 1) % face.size()] - p);
     if (m.norm() == 0.0) continue;
     m.normalize();
     if (m.dot(inward) > 0.0) m = -m;  // outward
-    if (allBeyond(m, m.dot(p), solid.vertices(), tolerance)) return true;
+    pyramid.sides.push_back(Plane{m, m.dot(p)});
   }
+  return pyramid;
+}
+
+// Whether a solid cannot meet the pyramid: a face plane of the solid with the whole pyramid
+// outside it, or a side plane of the pyramid with the whole solid outside it.
+bool separated(const ConvexPolyhedron& solid, const Pyramid& pyramid, double tolerance) {
+  for (const auto& f : solid.faces())
+    if (allBeyond(f.plane.normal, f.plane.offset, pyramid.points, tolerance)) return true;
+  for (const Plane& side : pyramid.sides)
+    if (allBeyond(side.normal, side.offset, solid.vertices(), tolerance)) return true;
   return false;
+}
+
+// The 2-D bounding box of a polygon: {lo, hi}.
+std::pair<Vec2, Vec2> boundsOf(const Polygon2& q) {
+  Vec2 lo = q[0], hi = lo;
+  for (const Vec2& x : q) {
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  return {lo, hi};
 }
 
 // Φ = ½ Σ θ n·unit(b × a) over the boundary of the visible region (projected solid angle, sr).
@@ -278,26 +301,18 @@ double faceIlluminance(const ExactFace& face, const SamplePoint& point, const Sc
     centre += x / static_cast<double>(lit.size());
   }
   if (polygons[0].size() < 3) return 0.0;
-  const Vec3 inward = centre - p;
-  Vec2 lo = polygons[0][0], hi = lo;
-  for (const Vec2& x : polygons[0]) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
+  const Pyramid pyramid = pyramidOf(p, lit.vertices(), centre - p);
+  const auto [lo, hi] = boundsOf(polygons[0]);
   const Vec2 margin = hi - lo;
   const Polygon2 bound = {lo - margin, Vec2(hi.x() + margin.x(), lo.y() - margin.y()), hi + margin,
                           Vec2(lo.x() - margin.x(), hi.y() + margin.y())};
   for (int s = 0; s < static_cast<int>(scene.solids.size()); ++s) {
     const ConvexPolyhedron& solid = scene.solids[s].shape;
     if (s == point.solid || solid.empty()) continue;
-    if (separated(solid, p, lit.vertices(), inward, tolerance)) continue;
+    if (separated(solid, pyramid, tolerance)) continue;
     Polygon2 shadow = shadowPolygon(solid, p, h, reach, face.frame, bound, tolerance);
     if (shadow.empty()) continue;
-    Vec2 slo = shadow[0], shi = slo;
-    for (const Vec2& x : shadow) {
-      slo = slo.cwiseMin(x);
-      shi = shi.cwiseMax(x);
-    }
+    const auto [slo, shi] = boundsOf(shadow);
     if ((slo.array() > hi.array()).any() || (shi.array() < lo.array()).any()) continue;
     polygons.push_back(std::move(shadow));
   }
