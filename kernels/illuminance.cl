@@ -1470,7 +1470,9 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
   for (int f = 0; f < face_count; ++f) {
     PnSourceFace face = faces[f];
     PnPatchFace pf = patch_faces[g * face_count + f];
-    if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
+    if (pf.faceClass == PN_CLASS_UMBRA) /* the host found every lane in one occluder's umbra */
+      blocked |= ((int8)(pf.facingLanes) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1;
+    else if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
       /* Lanes that see the face through its aperture (culling only): its visible rectangle;
        * `dark` lanes see none of it past the wall. */
       ApertureView8 view;

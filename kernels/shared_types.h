@@ -81,14 +81,15 @@ typedef struct {
  * (the plain path, --no-culling). */
 typedef struct {
   pn_int firstCandidate, candidateCount;
-  pn_int faceClass; /* PN_CLASS_* */
-  pn_int pad0;
+  pn_int faceClass;   /* PN_CLASS_* */
+  pn_int facingLanes; /* PN_CLASS_UMBRA: bit l set when lane l faces the source (class Umbra) */
 } PnPatchFace;
 
-#define PN_CLASS_A 0 /* every point of the patch sees the whole face above its horizon */
-#define PN_CLASS_B 1 /* some point's horizon may cut the face */
-#define PN_CLASS_C 2 /* no point of the patch receives anything from the face */
-/* The host's patch table writes C or B only: whether a horizon cuts the face the kernel tests
+#define PN_CLASS_A 0     /* every point of the patch sees the whole face above its horizon */
+#define PN_CLASS_B 1     /* some point's horizon may cut the face */
+#define PN_CLASS_C 2     /* no point of the patch receives anything from the face */
+#define PN_CLASS_UMBRA 3 /* every point of the patch is in one occluder's umbra: E = 0 */
+/* The host's patch table writes B, C or UMBRA: whether a horizon cuts the face the kernel tests
  * itself, in float, the way it clips (horizon_cuts8). */
 
 /* Something a camera ray can hit (kernels/visibility.cl). A solid is the intersection of its

@@ -9,10 +9,13 @@
 #include <optional>
 #include <string>
 
+#include "bench/office_floor.hpp"
 #include "bench/open_office.hpp"
 #include "geometry/tolerance.hpp"
 #include "lighting/grid_evaluation.hpp"
 #include "lighting/illuminance_engine.hpp"
+#include "lighting/kernel_scene.hpp"
+#include "lighting/patch_table.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "reference/pyramid_oracle.hpp"
 #include "reference/reference_illuminance.hpp"
@@ -153,6 +156,14 @@ TEST(Culling, FastPathsOnTheDenseOpenOffice) {
                               "open office, 400 solids", {}, std::nullopt);
 }
 
+// Four offices off a corridor (bench/office_floor.hpp, culling_bench's second curve): most of
+// every point's sources are behind a wall, and the patch table gives whole patches class UMBRA.
+// Not an example scene: held to the exact reference, agreement printed.
+TEST(Culling, FastPathsOnAFloorOfOffices) {
+  expectCullingChangesNothing(parseScene(bench::officeFloorYaml(4), "office-floor-4.yaml"),
+                              "floor of 4 offices", {}, std::nullopt);
+}
+
 // The example studies' cases are the scenes the bundled example and the sweeps compute: every
 // window width, panel spacing and flux, floor reflectance of the office (37 cases).
 TEST(Culling, SameIlluminanceOnEveryCaseOfTheExampleStudies) {
@@ -246,6 +257,57 @@ TEST(ShadowClasses, FacesThatSeeNothingAreUnlit) {
     EXPECT_EQ(result.illuminance[i], 0.0) << i;
     EXPECT_EQ(result.shadow(i, 0), ShadowClass::Unlit) << i;
   }
+}
+
+// Two offices on either side of a corridor: from the first office's work plane, the corridor's
+// wall hides the whole of each of the second office's lights (its window and four panels). The
+// patch table says so for every patch (PN_CLASS_UMBRA: the kernel skips the face), and those
+// sources give exactly 0 and class Umbra, as the exact reference (every solid projected onto
+// each face, in double) says they must.
+TEST(ShadowClasses, LightsBehindAWallAreUmbraForWholePatches) {
+  const Scene scene = parseScene(bench::officeFloorYaml(2), "office-floor-2.yaml");
+  const GridSamples samples = gridSamples(scene, scene.grids.at(0));  // the first office's
+  std::vector<SamplePoint> points;
+  for (std::size_t i = 0; i < samples.points.size(); ++i)
+    if (samples.inside[i] < 0) points.push_back(samples.points[i]);
+  ASSERT_GT(points.size(), 1000u);
+  std::vector<int> hiddenSources;  // the second office's
+  for (std::size_t s = 0; s < scene.sources.size(); ++s)
+    if (scene.sources[s].name.find("-2") != std::string::npos)
+      hiddenSources.push_back(static_cast<int>(s));
+  ASSERT_EQ(hiddenSources.size(), 5u);
+
+  const SceneShadows shadows = buildSceneShadows(scene);
+  const std::vector<FaceVolumes> volumes = flattenVolumes(shadows);
+  const KernelScene packed = packScene(scene, shadows);
+  const std::size_t workItems = (points.size() + PN_LANES - 1) / PN_LANES;
+  const PatchTable table =
+      buildPatchTable(shadows, volumes, packed, points, workItems, true, 2.0 * packed.epsLength);
+  int umbraEntries = 0, hiddenEntries = 0;
+  for (std::size_t f = 0; f < shadows.faces.size(); ++f) {
+    const bool hidden =
+        std::count(hiddenSources.begin(), hiddenSources.end(), shadows.faces[f].source) > 0;
+    for (std::size_t w = 0; w < workItems; ++w) {
+      const PnPatchFace& entry = table.entries[w * shadows.faces.size() + f];
+      umbraEntries += entry.faceClass == PN_CLASS_UMBRA;
+      hiddenEntries += hidden;
+      if (hidden) {
+        EXPECT_EQ(entry.faceClass, PN_CLASS_UMBRA) << "face " << f << ", work-item " << w;
+        EXPECT_EQ(entry.facingLanes, (1 << PN_LANES) - 1) << "face " << f << ", work-item " << w;
+      }
+    }
+  }
+  EXPECT_EQ(umbraEntries, hiddenEntries);  // the first office's own lights reach every patch
+
+  const IlluminanceResult result = IlluminanceEngine(cpuDevice(), scene).evaluate(points, true);
+  const std::vector<std::vector<double>> exact = exactIlluminance(scene, points, true);
+  for (int s : hiddenSources)
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      EXPECT_EQ(exact[s][i], 0.0) << scene.sources[s].name << " at " << i;
+      EXPECT_EQ(result.bySource[i * result.sourceCount + s], 0.0)
+          << scene.sources[s].name << " at " << i;
+      EXPECT_EQ(result.shadow(i, s), ShadowClass::Umbra) << scene.sources[s].name << " at " << i;
+    }
 }
 
 // §2.4 step v: the candidates of a receiving face are every caster whose penumbra volume meets

@@ -61,6 +61,47 @@ void boxCandidates(const FaceVolumes& volumes, const BoundingBox& box, std::span
   }
 }
 
+// Whether one of the casters `among` hides the face from every point of the box: the box lies
+// deeper than `margin` inside the caster's umbra (each plane's box corner least inside it), and
+// none of `points` lies on the caster's solid (the kernel does not let a solid shade its own
+// points).
+bool boxHidden(const FaceVolumes& volumes, const BoundingBox& box, std::span<const int> among,
+               double margin, std::span<const SamplePoint> points, std::size_t first,
+               std::size_t count) {
+  const Vec3 centre = 0.5 * (box.lo + box.hi);
+  const Vec3 half = 0.5 * (box.hi - box.lo);
+  for (int k : among) {
+    const std::size_t begin = volumes.umbraFirst[k], end = volumes.umbraFirst[k + 1];
+    if (begin == end) continue;
+    bool inside = true;
+    for (std::size_t j = begin; j < end && inside; ++j) {
+      const Plane& plane = volumes.umbraPlanes[j];
+      inside = plane.signedDistance(centre) + plane.normal.cwiseAbs().dot(half) < -margin;
+    }
+    for (std::size_t i = first; i < first + count && inside; ++i)
+      inside = pointAt(points, i).solid != volumes.solid[k];
+    if (inside) return true;
+  }
+  return false;
+}
+
+// The lanes of work-item w that face the source's face: in front of its plane, some vertex above
+// the lane's horizon (the kernel's shadow class Umbra rather than Unlit).
+cl_int facingLanes(std::span<const SamplePoint> points, std::size_t w,
+                   const EmittingFaceShadows& face, const Plane& emission) {
+  cl_int lanes = 0;
+  for (std::size_t l = 0; l < PN_LANES; ++l) {
+    const SamplePoint& p = pointAt(points, w * PN_LANES + l);
+    if (emission.signedDistance(p.position) <= 0.0) continue;
+    for (const Vec3& q : face.face.vertices())
+      if (p.normal.dot(q - p.position) > 0.0) {
+        lanes |= cl_int{1} << l;
+        break;
+      }
+  }
+  return lanes;
+}
+
 }  // namespace
 
 std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows) {
@@ -68,9 +109,15 @@ std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows) {
   for (std::size_t f = 0; f < all.size(); ++f) {
     FaceVolumes& v = all[f];
     v.first.push_back(0);
+    v.umbraFirst.push_back(0);
     for (const ShadowCaster& caster : shadows.faces[f].casters) {
       v.planes.insert(v.planes.end(), caster.volume.penumbra.begin(), caster.volume.penumbra.end());
       v.first.push_back(v.planes.size());
+      if (!caster.behindAperture)
+        v.umbraPlanes.insert(v.umbraPlanes.end(), caster.volume.umbra.begin(),
+                             caster.volume.umbra.end());
+      v.umbraFirst.push_back(v.umbraPlanes.size());
+      v.solid.push_back(caster.solid);
     }
   }
   return all;
@@ -91,14 +138,17 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
   const std::size_t groups = (workItems + kItemsPerGroup - 1) / kItemsPerGroup;
   const std::size_t supers = (groups + kGroupsPerSuper - 1) / kGroupsPerSuper;
   std::vector<std::vector<int>> superCandidates(supers * faceCount);  // [super * faceCount + f]
+  std::vector<char> superHidden(supers * faceCount);  // one caster hides f from the super-group
   tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
     const std::size_t f = sf % faceCount;
     std::vector<int> all(shadows.faces[f].casters.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    boxCandidates(volumes[f], boxOf(points, firstItem * PN_LANES, items * PN_LANES), all, margin,
-                  superCandidates[sf]);
+    const BoundingBox box = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
+    boxCandidates(volumes[f], box, all, margin, superCandidates[sf]);
+    superHidden[sf] = boxHidden(volumes[f], box, superCandidates[sf], margin, points,
+                                firstItem * PN_LANES, items * PN_LANES);
   });
   std::vector<Plane> emission(faceCount);
   for (std::size_t f = 0; f < faceCount; ++f) emission[f] = shadows.faces[f].face.plane();
@@ -114,14 +164,32 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     std::vector<int> near, found;
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
-      boxCandidates(volumes[f], groupBox, superCandidates[g / kGroupsPerSuper * faceCount + f],
-                    margin, near);
+      // A caster that hides the face from a whole super-group or group (a wall between it and
+      // another room's light) hides it from each of its work-items.
+      const std::size_t sf = g / kGroupsPerSuper * faceCount + f;
+      bool groupHidden = superHidden[sf];
+      if (!groupHidden) {
+        boxCandidates(volumes[f], groupBox, superCandidates[sf], margin, near);
+        groupHidden = boxHidden(volumes[f], groupBox, near, margin, points, firstItem * PN_LANES,
+                                items * PN_LANES);
+      }
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         PnPatchFace& entry = table.entries[w * faceCount + f];
         const bool dark = patchSeesNothing(points, w * PN_LANES, face, emission[f]);
         entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, dark ? PN_CLASS_C : PN_CLASS_B, 0};
-        if (dark || near.empty()) continue;
-        boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
+        if (dark) continue;
+        if (!groupHidden && near.empty()) continue;  // no caster near: the unoccluded face
+        bool hidden = groupHidden;
+        if (!hidden) {
+          boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
+          hidden = boxHidden(volumes[f], itemBoxes[w - firstItem], found, margin, points,
+                             w * PN_LANES, PN_LANES);
+        }
+        if (hidden) {
+          entry.faceClass = PN_CLASS_UMBRA;
+          entry.facingLanes = facingLanes(points, w, face, emission[f]);
+          continue;
+        }
         for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
         entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
       }

@@ -23,13 +23,21 @@ struct PatchTable {
 struct FaceVolumes {
   std::vector<Plane> planes;
   std::vector<std::size_t> first;  // caster k: planes [first[k], first[k + 1])
+  // Caster k's umbra planes [umbraFirst[k], umbraFirst[k + 1]), none when it claims no umbra or
+  // is behind the face's aperture (the kernel skips it for points that see the face through it).
+  std::vector<Plane> umbraPlanes;
+  std::vector<std::size_t> umbraFirst;
+  std::vector<int> solid;  // caster k's solid: it does not shade points on that solid
 };
 std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows);
 
 // `points` padded as the kernel sees them: work-item w holds points [w·PN_LANES, (w+1)·PN_LANES)
-// and the padding repeats the last point. `margin` (m) grows every volume, to cover the
-// kernel's own tolerance and float rounding. With culling off every entry lists all occluders
-// of its face with class B: the plain path.
+// and the padding repeats the last point. `margin` (m) grows every penumbra volume and shrinks
+// every umbra volume, to cover the kernel's own tolerance and float rounding. A patch that lies
+// inside one caster's shrunk umbra gets class PN_CLASS_UMBRA: the kernel's own umbra test would
+// give every lane 0 (the volumes are in host/shadow/shadow_volume.hpp), and skipping the face
+// keeps a room's cost from growing with the lights of the rooms beyond its walls. With culling
+// off every entry lists all occluders of its face with class B: the plain path.
 // `volumes` is flattenVolumes(shadows).
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
                            const KernelScene& packed, std::span<const SamplePoint> points,
