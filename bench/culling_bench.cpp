@@ -5,7 +5,7 @@
 //   usage: culling_bench [--device cpu|gpu|<index>] [--repeat R] [--solids 25,50,100,200,400]
 //                        [--floor 1,2,4,8,16] [--write-scene PATH [--solids N | --floor N]]
 // --solids: the open office (bench/open_office.hpp) with that many solids in its one room.
-// --floor: instead, a floor of that many cellular offices (bench/office_floor.hpp; 29 to 389
+// --floor: instead, a floor of that many cellular offices (bench/office_floor.hpp; 29 to 390
 // solids for 1 to 16 offices), where solids come with rooms of their own.
 #include <fmt/format.h>
 

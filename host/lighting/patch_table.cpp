@@ -27,18 +27,22 @@ BoundingBox boxOf(std::span<const SamplePoint> points, std::size_t first, std::s
   return box;
 }
 
-// Whether no point of the patch receives anything from the face: every point is of class C
-// (shadow/face_class.hpp: not strictly in front of the face's plane `emission`, or every vertex
-// on or below its horizon). The first point that sees a vertex answers, so this is about one
-// test per patch. Whether the horizon cuts the face (class A or B) the kernel finds for itself.
+// Whether a point may receive light from the face, i.e. is not of class C (shadow/face_class.hpp:
+// not strictly in front of the face's plane `emission`, or every vertex on or below its horizon).
+bool facesTheFace(const SamplePoint& p, const EmittingFaceShadows& face, const Plane& emission) {
+  if (emission.signedDistance(p.position) <= 0.0) return false;
+  for (const Vec3& q : face.face.vertices())
+    if (p.normal.dot(q - p.position) > 0.0) return true;
+  return false;
+}
+
+// Whether no point of the patch receives anything from the face: every point is of class C.
+// The first point that sees a vertex answers, so this is about one test per patch. Whether the
+// horizon cuts the face (class A or B) the kernel finds for itself.
 bool patchSeesNothing(std::span<const SamplePoint> points, std::size_t first,
                       const EmittingFaceShadows& face, const Plane& emission) {
-  for (std::size_t i = first; i < first + PN_LANES; ++i) {
-    const SamplePoint& p = pointAt(points, i);
-    if (emission.signedDistance(p.position) <= 0.0) continue;
-    for (const Vec3& q : face.face.vertices())
-      if (p.normal.dot(q - p.position) > 0.0) return false;
-  }
+  for (std::size_t i = first; i < first + PN_LANES; ++i)
+    if (facesTheFace(pointAt(points, i), face, emission)) return false;
   return true;
 }
 
@@ -85,20 +89,13 @@ bool boxHidden(const FaceVolumes& volumes, const BoundingBox& box, std::span<con
   return false;
 }
 
-// The lanes of work-item w that face the source's face: in front of its plane, some vertex above
-// the lane's horizon (the kernel's shadow class Umbra rather than Unlit).
+// The lanes of work-item w that face the source's face (facesTheFace): in an umbra, the kernel's
+// shadow class Umbra rather than Unlit.
 cl_int facingLanes(std::span<const SamplePoint> points, std::size_t w,
                    const EmittingFaceShadows& face, const Plane& emission) {
   cl_int lanes = 0;
-  for (std::size_t l = 0; l < PN_LANES; ++l) {
-    const SamplePoint& p = pointAt(points, w * PN_LANES + l);
-    if (emission.signedDistance(p.position) <= 0.0) continue;
-    for (const Vec3& q : face.face.vertices())
-      if (p.normal.dot(q - p.position) > 0.0) {
-        lanes |= cl_int{1} << l;
-        break;
-      }
-  }
+  for (std::size_t l = 0; l < PN_LANES; ++l)
+    if (facesTheFace(pointAt(points, w * PN_LANES + l), face, emission)) lanes |= cl_int{1} << l;
   return lanes;
 }
 
