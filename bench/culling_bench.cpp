@@ -92,9 +92,8 @@ double blockingOccludersPerPoint(const Scene& scene, const std::vector<SamplePoi
 std::vector<SamplePoint> gridPoints(const Scene& scene) {
   std::vector<SamplePoint> points;
   for (const CalculationGrid& grid : scene.grids) {
-    const GridSamples samples = gridSamples(scene, grid);
-    for (std::size_t i = 0; i < samples.points.size(); ++i)
-      if (samples.inside[i] < 0) points.push_back(samples.points[i]);
+    const std::vector<SamplePoint> outside = gridSamples(scene, grid).outsideSolids();
+    points.insert(points.end(), outside.begin(), outside.end());
   }
   return points;
 }

@@ -38,9 +38,8 @@ using namespace penumbra::testing;
 std::vector<SamplePoint> allGridPoints(const Scene& scene) {
   std::vector<SamplePoint> points;
   for (const CalculationGrid& grid : scene.grids) {
-    const GridSamples samples = gridSamples(scene, grid);
-    for (std::size_t i = 0; i < samples.points.size(); ++i)
-      if (samples.inside[i] < 0) points.push_back(samples.points[i]);
+    const std::vector<SamplePoint> outside = gridSamples(scene, grid).outsideSolids();
+    points.insert(points.end(), outside.begin(), outside.end());
   }
   return points;
 }
@@ -266,10 +265,8 @@ TEST(ShadowClasses, FacesThatSeeNothingAreUnlit) {
 // each face, in double) says they must.
 TEST(ShadowClasses, LightsBehindAWallAreUmbraForWholePatches) {
   const Scene scene = parseScene(bench::officeFloorYaml(2), "office-floor-2.yaml");
-  const GridSamples samples = gridSamples(scene, scene.grids.at(0));  // the first office's
-  std::vector<SamplePoint> points;
-  for (std::size_t i = 0; i < samples.points.size(); ++i)
-    if (samples.inside[i] < 0) points.push_back(samples.points[i]);
+  // The first office's work plane.
+  const std::vector<SamplePoint> points = gridSamples(scene, scene.grids.at(0)).outsideSolids();
   ASSERT_GT(points.size(), 1000u);
   std::vector<int> hiddenSources;  // the second office's
   for (std::size_t s = 0; s < scene.sources.size(); ++s)

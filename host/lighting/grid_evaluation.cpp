@@ -154,6 +154,13 @@ GridSamples gridSamples(const SolidLocator& solids, const CalculationGrid& grid,
   return samples;
 }
 
+std::vector<SamplePoint> GridSamples::outsideSolids() const {
+  std::vector<SamplePoint> outside;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (inside[i] < 0) outside.push_back(points[i]);
+  return outside;
+}
+
 GridSamples gridSamples(const Scene& scene, const CalculationGrid& grid) {
   return gridSamples(SolidLocator(scene), grid);
 }

@@ -51,6 +51,9 @@ class SolidLocator {
 struct GridSamples {
   std::vector<SamplePoint> points;
   std::vector<int> inside;  // index into Scene::solids, -1 for none
+
+  // The points that lie inside no solid (those whose E is computed), in the grid's order.
+  std::vector<SamplePoint> outsideSolids() const;
 };
 
 // Grid points [first, first + count), count clipped to the grid's end.
