@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "bench/degenerate_scenes.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
-#include "lighting/illuminance_engine.hpp"
 #include "reference/reference_illuminance.hpp"
 
 namespace penumbra::bench {

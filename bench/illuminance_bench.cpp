@@ -15,7 +15,7 @@
 #include <string>
 
 #include "cl/device.hpp"
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "reference/reference_illuminance.hpp"
 
 namespace {

@@ -12,9 +12,9 @@
 #include <numbers>
 
 #include "cl/device.hpp"
+#include "engine/facet_error.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "geometry/primitives.hpp"
-#include "lighting/facet_error.hpp"
-#include "lighting/illuminance_engine.hpp"
 
 namespace {
 

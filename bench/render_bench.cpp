@@ -15,7 +15,7 @@
 #include <string>
 
 #include "cl/device.hpp"
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "output/render_files.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"

@@ -26,6 +26,7 @@
 
 #include "output/image_files.hpp"
 #include "tests/synthetic_images.hpp"
+#include "timing/seconds_since.hpp"
 #include "tonemap/bounded_least_squares.hpp"
 #include "tonemap/constraint_system.hpp"
 #include "tonemap/display_spaces.hpp"
@@ -37,11 +38,6 @@
 namespace {
 
 using namespace penumbra;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 double peakMegabytes() {
   rusage usage{};

@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "sanitized_build.hpp"

@@ -19,7 +19,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"

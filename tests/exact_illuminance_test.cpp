@@ -10,7 +10,7 @@
 #include <numbers>
 #include <string>
 
-#include "lighting/grid_evaluation.hpp"
+#include "grid/grid_evaluation.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "scene/scene_loader.hpp"

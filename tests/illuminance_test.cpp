@@ -4,7 +4,7 @@
 #include <numbers>
 #include <random>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"
 

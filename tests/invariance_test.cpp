@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <numbers>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"

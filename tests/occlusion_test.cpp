@@ -13,8 +13,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
-#include "lighting/illuminance_engine.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "sanitized_build.hpp"

@@ -16,10 +16,10 @@
 
 #include "test_files.hpp"
 
-#include "lighting/grid_evaluation.hpp"
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_evaluation.hpp"
+#include "grid/grid_metrics.hpp"
+#include "grid/run_report.hpp"
 #include "output/result_files.hpp"
-#include "output/run_report.hpp"
 #include "output/staged_directory.hpp"
 #include "output/summary_table.hpp"
 

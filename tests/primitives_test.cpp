@@ -8,7 +8,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_device.hpp"

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 #include "output/result_files.hpp"
 #include "output/result_reader.hpp"
 #include "test_files.hpp"

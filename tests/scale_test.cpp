@@ -20,7 +20,7 @@
 #include <fmt/format.h>
 
 #include "geometry/tolerance.hpp"
-#include "lighting/grid_evaluation.hpp"
+#include "grid/grid_evaluation.hpp"
 #include "penumbra_process.hpp"
 #include "sanitized_build.hpp"
 #include "scene/scene_loader.hpp"

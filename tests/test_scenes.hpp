@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "geometry/convex_polyhedron.hpp"
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra::testing {

@@ -8,8 +8,8 @@
 #include <map>
 #include <sstream>
 
-#include "lighting/grid_evaluation.hpp"
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "grid/grid_evaluation.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_device.hpp"
 

@@ -18,8 +18,8 @@
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 
+#include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
-#include "lighting/illuminance_engine.hpp"
 #include "output/result_files.hpp"
 #include "test_device.hpp"
 #include "test_files.hpp"

@@ -9,8 +9,8 @@
 #include <cstdlib>
 #include <random>
 
-#include "lighting/illuminance_engine.hpp"
-#include "lighting/iso_bands.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "grid/iso_bands.hpp"
 #include "output/image_files.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"

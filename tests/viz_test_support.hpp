@@ -13,8 +13,8 @@
 #include <vtkPNGReader.h>
 #include <vtkSmartPointer.h>
 
-#include "lighting/grid_metrics.hpp"
-#include "output/run_report.hpp"
+#include "grid/grid_metrics.hpp"
+#include "grid/run_report.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace penumbra::testing {

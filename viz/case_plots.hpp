@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "cl/device.hpp"
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "output/case_output.hpp"
 #include "viz/plot_options.hpp"
 

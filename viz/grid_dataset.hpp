@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <string>
 
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra::viz {
 

@@ -10,7 +10,7 @@
 #include <vtkSmartPointer.h>
 #include <Eigen/Core>
 
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 #include "scene/scene.hpp"
 #include "viz/colour_legend.hpp"
 #include "viz/colour_scale.hpp"

@@ -9,8 +9,8 @@
 #include <span>
 #include <vector>
 
-#include "lighting/illuminance_engine.hpp"
-#include "lighting/iso_bands.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "grid/iso_bands.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
 #include "viz/rgb.hpp"

@@ -8,7 +8,7 @@
 #include <Eigen/Core>
 
 #include "geometry/plane.hpp"
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra::viz {
 

@@ -10,7 +10,7 @@
 
 #include "cl/device.hpp"
 #include "cli/exit_status.hpp"
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "output/result_reader.hpp"
 #include "output/staged_directory.hpp"
 #include "scene/scene_loader.hpp"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "lighting/illuminance_engine.hpp"
-#include "output/run_report.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "grid/run_report.hpp"
 #include "scene/scene.hpp"
 #include "viz/plot_options.hpp"
 

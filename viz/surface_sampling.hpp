@@ -4,7 +4,7 @@
 // computed at the cells' corners.
 #include <vector>
 
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra::viz {

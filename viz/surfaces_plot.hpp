@@ -4,7 +4,7 @@
 #include <filesystem>
 #include <string>
 
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "scene/scene.hpp"
 #include "viz/plot_options.hpp"
 

@@ -10,23 +10,18 @@
 #include "cli/exit_status.hpp"
 #include "cli/progress.hpp"
 #include "cli/version.hpp"
-#include "evaluation/estimator.hpp"
-#include "evaluation/scene_evaluation.hpp"
+#include "engine/estimator.hpp"
+#include "grid/run_report.hpp"
+#include "grid/scene_grids.hpp"
 #include "output/result_files.hpp"
-#include "output/run_report.hpp"
 #include "output/staged_directory.hpp"
 #include "output/summary_table.hpp"
 #include "scene/scene_loader.hpp"
+#include "timing/seconds_since.hpp"
 
 namespace penumbra {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 EstimatorOptions estimatorOptions(const GridOptions& options) {
   return EstimatorOptions{options.device, options.reference, options.referenceN, options.culling};
@@ -56,11 +51,7 @@ int run(const GridOptions& options) {
   checkOutputTarget(options.output);
 
   const Scene scene = loadScene(options.scene, options.parameters);
-  RunReport report;
-  report.version = kVersion;
-  report.sceneFile = options.scene;
-  report.parameters = scene.parameters;
-  report.loadSeconds = secondsSince(start);
+  const double loadSeconds = secondsSince(start);
   const std::vector<const CalculationGrid*> grids = selectGrids(scene, options.grids);
   if (grids.empty() && !options.quiet) {
     fmt::print(stderr, "penumbra: warning: {} has no calculation grids\n", options.scene.string());
@@ -68,10 +59,9 @@ int run(const GridOptions& options) {
 
   const auto setupStart = Clock::now();
   Estimator estimator(estimatorOptions(options), scene);
+  RunReport report = runReport(scene, options.scene, estimator, kVersion);
+  report.loadSeconds = loadSeconds;
   report.setupSeconds = secondsSince(setupStart);
-  report.estimator = estimator.name();
-  report.referenceN = estimator.referenceN();
-  report.device = estimator.device();
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
   }

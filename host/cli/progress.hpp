@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <string>
 
-#include "evaluation/scene_evaluation.hpp"
+#include "grid/scene_grids.hpp"
 
 namespace penumbra {
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/estimator.hpp"
+#include "engine/estimator.hpp"
 
 namespace penumbra {
 

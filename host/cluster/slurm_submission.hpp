@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/estimator.hpp"
+#include "engine/estimator.hpp"
 #include "study/study.hpp"
 
 namespace penumbra {

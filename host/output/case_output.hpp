@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

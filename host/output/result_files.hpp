@@ -14,8 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lighting/grid_evaluation.hpp"
-#include "output/run_report.hpp"
+#include "grid/grid_evaluation.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra {
 

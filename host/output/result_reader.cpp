@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 #include "output/result_files.hpp"
 
 namespace penumbra {

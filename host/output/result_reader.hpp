@@ -5,7 +5,7 @@
 #include <istream>
 #include <string>
 
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra {
 

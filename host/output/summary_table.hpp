@@ -2,7 +2,7 @@
 // The table `penumbra grid` prints when it is done: one row per grid.
 #include <string>
 
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra {
 

@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grid/run_report.hpp"
 #include "output/case_output.hpp"
 #include "output/line_chart.hpp"
-#include "output/run_report.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

@@ -6,7 +6,7 @@
 #include <span>
 #include <vector>
 
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

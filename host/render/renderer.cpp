@@ -10,15 +10,10 @@
 #include "render/camera.hpp"
 #include "render/interval_sampling.hpp"
 #include "render/visibility_engine.hpp"
+#include "timing/seconds_since.hpp"
 
 namespace penumbra {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Points per call of the illuminance engine: bounds the memory of one call and gives the progress
 // line something to count.

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cl/device.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "image/images.hpp"
-#include "lighting/illuminance_engine.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 #include "scene/parameters.hpp"
 #include "study/study.hpp"
 

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 
 namespace penumbra {
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "evaluation/scene_evaluation.hpp"
+#include "grid/scene_grids.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/case_fingerprint.hpp"
 #include "study/study_cases.hpp"

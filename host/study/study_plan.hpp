@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "evaluation/estimator.hpp"
+#include "engine/estimator.hpp"
 #include "scene/scene.hpp"
 #include "study/study.hpp"
 #include "study/study_layout.hpp"

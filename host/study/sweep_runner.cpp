@@ -7,22 +7,17 @@
 
 #include <fmt/format.h>
 
-#include "evaluation/scene_evaluation.hpp"
+#include "grid/scene_grids.hpp"
 #include "output/staged_directory.hpp"
 #include "study/results_table.hpp"
 #include "study/study_charts.hpp"
 #include "study/study_plan.hpp"
+#include "timing/seconds_since.hpp"
 
 namespace penumbra {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 fs::path caseFolder(const fs::path& out, const std::string& id) {
   return out / kCasesFolder / id;
 }
@@ -158,13 +153,7 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
       estimator->setScene(*next);
       scene = std::move(next);
     }
-    RunReport report;
-    report.version = settings.version;
-    report.sceneFile = study.scene;
-    report.parameters = scene->parameters;
-    report.estimator = estimator->name();
-    report.referenceN = estimator->referenceN();
-    report.device = estimator->device();
+    RunReport report = runReport(*scene, study.scene, *estimator, settings.version);
     report.grids = evaluateGrids(*scene, selectGrids(*scene, layout.grids), *estimator);
     report.totalSeconds = secondsSince(start);
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "timing/seconds_since.hpp"
 #include "tonemap/baseline_maps.hpp"
 #include "tonemap/bounded_least_squares.hpp"
 #include "tonemap/constraint_system.hpp"
@@ -15,12 +16,6 @@
 
 namespace penumbra {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOptions& options) {
   if (hdr.width != faces.width || hdr.height != faces.height) {

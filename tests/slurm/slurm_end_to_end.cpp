@@ -15,19 +15,15 @@
 #include "../penumbra_process.hpp"
 #include "../test_files.hpp"
 #include "cluster/process.hpp"
+#include "timing/seconds_since.hpp"
 
 namespace penumbra {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 using testing::readText;
 using testing::runPenumbra;
 using testing::TempDir;
-
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // 8 cases: the example office's window from 1.0 to 2.4 m, daylight only.
 void writeStudy(const fs::path& dir) {

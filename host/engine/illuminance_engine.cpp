@@ -1,4 +1,4 @@
-#include "lighting/illuminance_engine.hpp"
+#include "engine/illuminance_engine.hpp"
 
 #include <fmt/format.h>
 
@@ -8,8 +8,8 @@
 #include <utility>
 
 #include "cl/buffer.hpp"
-#include "lighting/kernel_scene.hpp"
-#include "lighting/patch_table.hpp"
+#include "engine/kernel_scene.hpp"
+#include "engine/patch_table.hpp"
 #include "shadow/scene_shadows.hpp"
 
 namespace penumbra {

@@ -1,4 +1,4 @@
-#include "lighting/iso_bands.hpp"
+#include "grid/iso_bands.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "lighting/patch_table.hpp"
+#include "engine/patch_table.hpp"
 
 #include <tbb/parallel_for.h>
 

@@ -1,4 +1,4 @@
-#include "evaluation/scene_evaluation.hpp"
+#include "grid/scene_grids.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -7,6 +7,18 @@
 #include <fmt/format.h>
 
 namespace penumbra {
+
+RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
+                    const Estimator& estimator, const std::string& version) {
+  RunReport report;
+  report.version = version;
+  report.sceneFile = sceneFile;
+  report.parameters = scene.parameters;
+  report.estimator = estimator.name();
+  report.referenceN = estimator.referenceN();
+  report.device = estimator.device();
+  return report;
+}
 
 std::vector<const CalculationGrid*> selectGrids(const Scene& scene,
                                                 const std::vector<std::string>& wanted) {

@@ -3,6 +3,7 @@
 // `penumbra grid` makes one per run; `penumbra sweep` keeps one for all its cases (the device and
 // the compiled program stay, only the scene is replaced), so both compute through this class.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -10,18 +11,21 @@
 #include <vector>
 
 #include "cl/device.hpp"
-#include "lighting/grid_evaluation.hpp"
-#include "lighting/illuminance_engine.hpp"
-#include "lighting/sample_point.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
+
+// E in lx at each point: the kernel (IlluminanceEngine) or the host reference, chosen by
+// Estimator; grid evaluation takes either through this one signature.
+using IlluminanceEstimator = std::function<std::vector<double>(std::span<const SamplePoint>)>;
 
 struct EstimatorOptions {
   std::string device = "auto";  // "auto", "cpu", "gpu" or an index from `penumbra devices`
   bool reference = false;       // the host reference instead of the OpenCL kernel
   int referenceN = 64;          // reference: ~n² sub-elements per source face
-  bool culling = true;          // kernel: shadow-volume culling (issue 3); off = the plain path
+  bool culling = true;          // kernel: shadow-volume culling; off: every occluder at every point
 };
 
 class Estimator {

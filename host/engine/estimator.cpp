@@ -1,4 +1,4 @@
-#include "evaluation/estimator.hpp"
+#include "engine/estimator.hpp"
 
 #include <algorithm>
 #include <stdexcept>

@@ -5,8 +5,8 @@
 // facet point is where the same ray meets the polyhedron, with the facet's normal.
 #include <vector>
 
+#include "engine/illuminance_engine.hpp"
 #include "geometry/convex_polyhedron.hpp"
-#include "lighting/illuminance_engine.hpp"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "output/run_report.hpp"
+#include "grid/run_report.hpp"
 
 namespace penumbra {
 

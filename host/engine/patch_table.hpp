@@ -5,9 +5,9 @@
 #include <span>
 #include <vector>
 
+#include "engine/kernel_scene.hpp"
+#include "geometry/sample_point.hpp"
 #include "kernels/shared_types.h"
-#include "lighting/kernel_scene.hpp"
-#include "lighting/sample_point.hpp"
 #include "shadow/scene_shadows.hpp"
 
 namespace penumbra {

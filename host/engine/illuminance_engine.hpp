@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cl/device.hpp"
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 #include "shadow/shadow_class.hpp"
 

@@ -2,14 +2,21 @@
 // A scene's calculation grids → the reports the output layer writes: what `penumbra grid` does for
 // one scene and `penumbra sweep` for each case, through the same code.
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
-#include "evaluation/estimator.hpp"
-#include "output/run_report.hpp"
+#include "engine/estimator.hpp"
+#include "grid/run_report.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
+
+// A run's report before its grids are computed: penumbra's version, the scene file and its
+// parameters, and what computes E (kernel or reference, the device). `penumbra grid` and each case
+// of `penumbra sweep` start from it and add their grids and times.
+RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
+                    const Estimator& estimator, const std::string& version);
 
 // Told about each grid as it is computed (the progress line); every method does nothing by
 // default.

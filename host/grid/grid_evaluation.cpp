@@ -1,4 +1,4 @@
-#include "lighting/grid_evaluation.hpp"
+#include "grid/grid_evaluation.hpp"
 
 #include <algorithm>
 #include <chrono>

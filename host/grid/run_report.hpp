@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "lighting/grid_evaluation.hpp"
-#include "lighting/grid_metrics.hpp"
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
+#include "grid/grid_evaluation.hpp"
+#include "grid/grid_metrics.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

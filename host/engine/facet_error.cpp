@@ -1,4 +1,4 @@
-#include "lighting/facet_error.hpp"
+#include "engine/facet_error.hpp"
 
 #include <algorithm>
 #include <cmath>

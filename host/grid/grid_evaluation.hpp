@@ -14,9 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "engine/estimator.hpp"
 #include "geometry/bounding_box.hpp"
-#include "lighting/grid_metrics.hpp"
-#include "lighting/sample_point.hpp"
+#include "geometry/sample_point.hpp"
+#include "grid/grid_metrics.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -62,8 +63,6 @@ GridSamples gridSamples(const SolidLocator& solids, const CalculationGrid& grid,
                         std::size_t count = std::numeric_limits<std::size_t>::max());
 GridSamples gridSamples(const Scene& scene, const CalculationGrid& grid);
 
-// E in lx at each point.
-using IlluminanceEstimator = std::function<std::vector<double>(std::span<const SamplePoint>)>;
 // Called after each batch with the points of the grid done so far and the grid's total.
 using ProgressCallback = std::function<void(std::size_t done, std::size_t total)>;
 

@@ -1,4 +1,4 @@
-#include "lighting/grid_metrics.hpp"
+#include "grid/grid_metrics.hpp"
 
 #include <algorithm>
 #include <limits>

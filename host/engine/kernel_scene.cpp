@@ -1,4 +1,4 @@
-#include "lighting/kernel_scene.hpp"
+#include "engine/kernel_scene.hpp"
 
 #include <fmt/format.h>
 
