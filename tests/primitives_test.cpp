@@ -1,4 +1,4 @@
-// Curved primitives (issue 8): the tessellation, primitives in scene files, and a luminous
+// Curved primitives (docs/primitives.md): the tessellation, primitives in scene files, and a luminous
 // sphere against its closed form and the independent reference.
 #include "geometry/primitives.hpp"
 

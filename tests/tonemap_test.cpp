@@ -1,4 +1,4 @@
-// The constraint tone map (issue 5): bounds, the thesis's staircase claim, gradients, pixels that
+// The constraint tone map (docs/tonemap.md): bounds, the thesis's staircase claim, gradients, pixels that
 // never take a gain from across an edge, and the two baselines against their closed forms.
 #include "tonemap/tone_map.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Rendering to a PNG file. Debian's VTK renders through X only (STACK.md): without a display it
+// Rendering to a PNG file. Debian's VTK renders through X only (docs/building.md): without a display it
 // aborts, so callers check first and say how to get one.
 #include <filesystem>
 
