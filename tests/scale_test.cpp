@@ -282,8 +282,9 @@ TEST(DeviceMemory, AMalformedLimitIsNamed) {
 // Host memory is bounded by the batch (65 536 points), not by the grid: from 2·10^5 to 10^6
 // points the peak RSS may grow by less than 16 bytes a point (12.8 MB in all; measured: under
 // 2 MB, the allocator's and PoCL's noise). Holding any per-point record would break it: the
-// points as SamplePoint are 56 bytes, the grid's positions and normals 48, and penumbra grew by
-// 214 a point before it streamed. (Keeping only E, 8 bytes, would pass: it is the output.)
+// points as SamplePoint are 56 bytes, the grid's positions and normals 48, and a grid evaluated
+// whole rather than streamed holds 214 a point. (Keeping only E, 8 bytes, would pass: it is the
+// output.)
 TEST(HostMemory, PeakRssDoesNotGrowWithThePoints) {
   TempDir dir("penumbra-scale");
   const double smallSpacing = std::sqrt(24.0 / 2e5), largeSpacing = std::sqrt(24.0 / 1e6);

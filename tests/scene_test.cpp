@@ -342,9 +342,9 @@ TEST(Pts, ErrorsNameThePtsFileAndLine) {
   }
 }
 
-// Found by the pts fuzz target (tests/fuzz/regressions/pts): a normal of 7.7e157 squared
-// overflowed, and normalized() gave a NaN normal, which the kernel turned into NaN illuminance;
-// a normal of 3e-300 squared underflowed, and was rejected as the zero vector.
+// From the pts fuzz target (tests/fuzz/regressions/pts): a normal of 7.7e157 squared overflows,
+// and normalized() would give a NaN normal, which the kernel turns into NaN illuminance; a normal
+// of 3e-300 squared underflows, and would be rejected as the zero vector.
 TEST(Pts, HugeAndTinyNormalsBecomeUnitVectors) {
   const scenefile::SensorPoints pts =
       scenefile::parsePts("0 0 0 0 1e200 1e200\n0 0 0 -3e-300 0 0\n", "s.pts", "k");
