@@ -1,8 +1,8 @@
 #pragma once
-// The open-office scene of the shadow-volume benchmark, generated: a 12 × 8 × 3 m room with two windows in the
-// facade, twelve ceiling panels, 20 workstations (desk with legs and modesty panel, a chair of
-// four boxes, pedestal, bin, keyboard, monitor, privacy screen, lamp, books, phone, cup), four
-// columns and four bookcases.
+// The open-office scene of the shadow-volume benchmark, generated: a 12 × 8 × 3 m room with two
+// windows in the facade, twelve ceiling panels, 20 workstations (desk with legs and modesty panel,
+// a chair of four boxes, pedestal, bin, keyboard, monitor, privacy screen, lamp, books, phone,
+// cup), four columns and four bookcases.
 // `solids` picks how many solids in all (room slabs included): furniture is added by kind across
 // every workstation in turn (all desk tops, then all chair seats, ...), so that a smaller scene
 // is the same office, sparser, not half an office. data/open-office.yaml is this at 240 solids

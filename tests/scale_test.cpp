@@ -1,7 +1,7 @@
-// Scale without surprise (docs/reliability.md, "Scale"): the solid index gives the answers of testing every
-// solid, a planar grid is described rather than stored, host memory does not grow with the
-// number of grid points, and a request the device cannot hold either shrinks to fit or stops
-// with a clear message and no output.
+// Scale without surprise (docs/reliability.md, "Scale"): the solid index gives the answers of
+// testing every solid, a planar grid is described rather than stored, host memory does not grow
+// with the number of grid points, and a request the device cannot hold either shrinks to fit or
+// stops with a clear message and no output.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <spawn.h>

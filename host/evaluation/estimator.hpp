@@ -21,7 +21,7 @@ struct EstimatorOptions {
   std::string device = "auto";  // "auto", "cpu", "gpu" or an index from `penumbra devices`
   bool reference = false;       // the host reference instead of the OpenCL kernel
   int referenceN = 64;          // reference: ~n² sub-elements per source face
-  bool culling = true;          // kernel: shadow-volume culling (docs/method.md); off = the plain path
+  bool culling = true;          // kernel: shadow-volume culling; off = the plain path
 };
 
 class Estimator {
