@@ -19,8 +19,7 @@ namespace fs = std::filesystem;
 
 const fs::path kSourceDir = PENUMBRA_SOURCE_DIR;
 const fs::path kOffice = kSourceDir / "data" / "office.yaml";
-const fs::path kCie171 =
-    kSourceDir / "tests" / "validation" / "cie171";  // CIE 171:2006 cases
+const fs::path kCie171 = kSourceDir / "tests" / "validation" / "cie171";  // CIE 171:2006 cases
 
 // The SceneError that parsing `yaml` throws; fails the test when it parses.
 SceneError errorOf(const std::string& yaml, const fs::path& file = "test.yaml") {
