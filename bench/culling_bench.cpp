@@ -1,6 +1,6 @@
-// Shadow-volume culling on the open office (issue 3): work-plane throughput with culling (face
+// Shadow-volume culling on the open office: work-plane throughput with culling (face
 // classes, candidate occluders per patch, umbra/penumbra volumes) and without (every sample
-// considers every occluder: the foundation's path), and how the cost per point grows with the
+// considers every occluder: the plain path), and how the cost per point grows with the
 // number of solids. Prints one JSON line per scene size.
 //   usage: culling_bench [--device cpu|gpu|<index>] [--repeat R] [--solids 25,50,100,200,400]
 //                        [--floor 1,2,4,8,16] [--write-scene PATH [--solids N | --floor N]]

@@ -1,5 +1,5 @@
 #pragma once
-// The stress suite's checks (issue 10, item 3), shared by bench/degenerate_stress.cpp (10^4
+// The stress suite's checks (docs/reliability.md), shared by bench/degenerate_stress.cpp (10^4
 // configurations) and tests/degenerate_test.cpp (a few hundred). At every point of every
 // configuration the kernel's E must be finite, ≥ 0, not above the unoccluded E, and within the
 // occlusion criterion of the independent reference (tests/occlusion_test.cpp: 2e-3 of the

@@ -1,5 +1,5 @@
 #pragma once
-// Degenerate configurations for the stress suite (issue 10, item 3), generated from a seed so
+// Degenerate configurations for the stress suite (docs/reliability.md), generated from a seed so
 // that a failure is reproduced by its number. Coordinates are drawn on a coarse lattice, so that
 // the coincidences a designer's model is full of happen all the time instead of never: occluders
 // touching each other or sharing an edge, touching or crossing the source's plane, standing flush

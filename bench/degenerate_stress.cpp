@@ -1,4 +1,4 @@
-// The degenerate-geometry stress suite (issue 10, item 3): N seeded configurations
+// The degenerate-geometry stress suite (docs/reliability.md): N seeded configurations
 // (bench/degenerate_scenes.hpp) through the kernel, checked against the unoccluded E and the
 // independent reference (bench/degenerate_check.hpp). Prints the figures and every failure;
 // exit status 1 when a point fails.

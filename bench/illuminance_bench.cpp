@@ -1,4 +1,4 @@
-// Throughput of the illuminance kernel in point·sources per second (issue 2, item 7):
+// Throughput of the illuminance kernel in point·sources per second:
 //  (a) an unoccluded grid: a work plane under ceiling panels in an empty room;
 //  (b) a penumbra-heavy grid: most points partly shadowed by several boxes;
 // each on the chosen device (default PoCL's CPU device; POCL_MAX_PTHREAD_COUNT=2 pins two

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Our three display maps beside three operators of Debian's pfstmo on the same render, each
-# judged by the share of visible edges whose contrast it keeps within 5 % (issue 5).
+# judged by the share of visible edges whose contrast it keeps within 5 %
+# (docs/tonemap.md).
 #   usage: bench/pfstmo_compare.sh VIEW.exr [VIEW.faceid.exr] [OUT_DIR] [BUILD_DIR]
 # Needs pfstools and pfstmo (apt-get install pfstools pfstmo); skips them with a message if they
 # are not installed, and still reports ours.

@@ -1,4 +1,4 @@
-// Curved primitives (issue 8): does the laminae placement of Conway & Cottingham pay?
+// Curved primitives: does the laminae placement of Conway & Cottingham pay?
 //  1. A sphere and a cylinder as receivers under a ceiling panel: mean and max relative error of
 //     E on the facets against E on the smooth surface at the same points, for N = 8, 16, 32, with
 //     the facets placed as the paper's laminae (a vertex / ring towards the light) and turned by

@@ -1,4 +1,4 @@
-// Rendering the example office (issue 4): a 1280 × 720 view on the OpenCL device for interval
+// Rendering the example office: a 1280 × 720 view on the OpenCL device for interval
 // k = 1, 4 and 8: seconds per render, Mpixel·sources/s, the share of exact samples, and the share
 // of time in visibility, illuminance, shading and output (the tone map and the files of a view).
 // Also the same visible points evaluated as one plain grid, the floor the render's illuminance part

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Peak host memory of `penumbra grid` against the number of grid points (issue 10, "scale without
+# Peak host memory of `penumbra grid` against the number of grid points ("scale without
 # surprise"; the figures in docs/reliability.md "Scale"). Generates the scenes with
 # bench/scale_scene, runs each under /usr/bin/time -v, and prints one row per run:
 # points, peak RSS, wall time, and bytes a point (peak RSS over the points).

@@ -1,4 +1,4 @@
-// Scenes for the scale check of issue 10 (bench/scale_rss.sh, docs/reliability.md "Scale"),
+// Scenes for the scale check (bench/scale_rss.sh, docs/reliability.md "Scale"),
 // written to stdout:
 //
 //   scale_scene POINTS            an empty 6 × 4 × 3 m room, one 3000 lm panel, a rect grid over

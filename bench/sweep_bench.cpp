@@ -1,4 +1,4 @@
-// Cases per second of a sweep (issue 7): `penumbra sweep` on a study, which builds the OpenCL
+// Cases per second of a sweep: `penumbra sweep` on a study, which builds the OpenCL
 // program once and keeps the device for every case, against `penumbra grid` run once per case as
 // separate processes (program build and device set-up each time; PoCL's kernel cache is warm for
 // both). Both compute the same grids of the same cases into fresh folders; each is timed

@@ -1,6 +1,6 @@
 // The constraint tone map on synthetic room views (tests/synthetic_images.hpp: window, luminaires,
-// walls with falloff, boxes with penumbra ramps) at 640x360, 1280x720 and 1920x1080 (issue 5
-// goal: 1280x720 under 1 s). Each size runs in its own child process so that its peak memory
+// walls with falloff, boxes with penumbra ramps) at 640x360, 1280x720 and 1920x1080 (the
+// target: 1280x720 under 1 s). Each size runs in its own child process so that its peak memory
 // (ru_maxrss) is its own. Prints one JSON line per size: the tone map's statistics and time, and
 // the solver comparison: the two-stage solver (primal-dual active set, projected Newton when the
 // active set cycles) against projected gradient with Barzilai-Borwein steps, the usual

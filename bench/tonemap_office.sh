@@ -1,5 +1,5 @@
 #!/bin/sh
-# The tone map on real renders of the example office (issue 5): the view from-door rendered at
+# The tone map on real renders of the example office: the view from-door rendered at
 # 640x360, 1280x720 and 1920x1080, then `penumbra tonemap` on each, with its solve time (from
 # <view>.tonemap.json) and its peak memory (/usr/bin/time -v, when installed).
 #   usage: bench/tonemap_office.sh [BUILD_DIR] [OUT_DIR]

@@ -1,4 +1,4 @@
-# Reliability builds (issue 10, docs/reliability.md), each in a build directory of its own:
+# Reliability builds (docs/reliability.md), each in a build directory of its own:
 #   -DPENUMBRA_SANITIZE=address,undefined   host code and its tests under ASan + UBSan (g++ or
 #                                           clang); viz tests are left out
 #   -DPENUMBRA_FUZZ=ON                      libFuzzer targets in tests/fuzz (needs clang: the

@@ -56,7 +56,7 @@ Scene roomScene(double gap = 0.05, bool mullion = true, bool chair = true) {
   return parseScene(roomYaml(gap, mullion, chair), "aperture-room.yaml");
 }
 
-// Lambert's contour integral in double (DESIGN.md), for a polygon seen whole from p.
+// Lambert's contour integral in double (docs/method.md, step 5), for a polygon seen whole from p.
 double polygonIlluminance(const Vec3& p, const Vec3& n, const std::vector<Vec3>& polygon,
                           double luminance) {
   double sum = 0.0;
@@ -208,11 +208,11 @@ TEST(Aperture, AgreesWithTheReferenceAndThePlainPath) {
 // With the walls as the only solids, a point in the room sees each sky as one rectangle: the sky
 // ∩ the cone from the point through the opening, computed here in double with no kernel code.
 // Both paths must meet it: the culled one (apertures) and the plain one (the reveals as
-// occluders, the foundation's visible-segment method). The culled path's rectangle corners are
+// occluders, the visible-segment method). The culled path's rectangle corners are
 // float (measured worst 1.5e-6 of E_unoccluded; 6.6e-7 when the same corners are integrated in
 // double, so the rest is the corners' rounding), the plain path's contour is assembled from
-// pieces of the sky's and the reveals' edges (2.9e-6; 5.8e-6 before the pieces met at shared
-// crossing points): each is held to its own bound.
+// pieces of the sky's and the reveals' edges, which meet at shared crossing points (2.9e-6):
+// each is held to its own bound.
 constexpr double kApertureFloat = 2e-6;
 TEST(Aperture, MeetsTheExactRectangleInAnEmptyRoom) {
   const Scene scene = roomScene(0.05, false, false);

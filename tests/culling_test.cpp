@@ -1,4 +1,4 @@
-// The kernel with shadow-volume culling (issue 3, item 4-5): the same illuminance as the plain
+// The kernel with shadow-volume culling: the same illuminance as the plain
 // path on every example scene, shadow classes that agree with the exact answer, face classes
 // and per-face candidates that never drop an occluder that blocks.
 #include <gtest/gtest.h>
@@ -50,22 +50,23 @@ Scene withoutSolids(Scene scene) {
 }
 
 // Culling changes which occluders a sample considers, never the answer: per point, the default
-// path and the plain one (--no-culling) agree to 1e-6 of the point's unoccluded illuminance, the
-// issue's criterion. E_unoccluded is the scale because it is the size of the terms the kernel sums
-// in float: a heavily shaded point's E is a small difference of such terms.
+// path and the plain one (--no-culling) agree to 1e-6 of the point's unoccluded illuminance.
+// E_unoccluded is the scale because it is the size of the terms the kernel sums in float: a
+// heavily shaded point's E is a small difference of such terms.
 //
-// Each path errs by its float rounding, and the two differ by the sum of both. Held to 1e-6 on
-// the example scenes since every sum of contour terms and of faces is compensated
+// Each path errs by its float rounding, and the two differ by the sum of both. They meet 1e-6 on
+// the example scenes because every sum of contour terms and of faces is compensated
 // (kernels/illuminance.cl, PnSum) and positions are relative to the scene's centre
 // (engine/kernel_scene.hpp). Measured (defaults): office 4.0e-7, open office 8.3e-7, CIE 171
-// cases 1.2e-7; before, 4.5e-7, 1.25e-6 and 1.7e-7. `culling` alone (apertures off, the scalar
-// penumbra path: the plain path's arithmetic) is held the same way: 7.6e-7 on the open office.
+// cases 1.2e-7. `culling` alone (apertures off, the scalar penumbra path: the plain path's
+// arithmetic) is held the same way: 7.6e-7 on the open office.
 //
 // Both paths are also held against the exact reference in double (reference/exact_illuminance):
 // to kKernelRelative of E_unoccluded at every point. Measured: 1.2e-6 on the open office, 4.4e-6
-// at 400 solids. With coordinates from the room's corner it was 5.4e-6 on the open office, 4.0e-6
-// of it the rounding of the coordinates to float: 2 cm from a chair back, a shadow edge on a panel
-// 2.3 m away moves a hundred times as far as the rounding moves the point.
+// at 400 solids. Centred coordinates keep the rounding of the positions to float small (within
+// 4 m of the centre floats are 2.4e-7 m apart): 2 cm from a chair back, a shadow edge on a panel
+// 2.3 m away moves a hundred times as far as the rounding moves the point, so with coordinates
+// from the room's corner that rounding alone would cost up to 4.0e-6 of E_unoccluded.
 //
 // Variants that are not example scenes (the bench's 400-solid office, the example studies'
 // cases) are held to the exact reference only, and their agreement is printed: it is the float

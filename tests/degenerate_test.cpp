@@ -1,4 +1,4 @@
-// The degenerate-geometry stress suite in ctest (issue 10, item 3): 300 of the seeded
+// The degenerate-geometry stress suite in ctest (docs/reliability.md): 300 of the seeded
 // configurations that bench/degenerate_stress runs by the ten thousand. Every point: E finite,
 // ≥ 0, not above the unoccluded E, within the occlusion criterion of the reference.
 #include <gtest/gtest.h>

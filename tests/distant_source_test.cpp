@@ -2,14 +2,14 @@
 //
 // A 0.6 m ceiling panel 10 m from the point, partly hidden by a chair back 0.4 m from it (the open
 // office's far panels seen past the near furniture). The occlusion tests' criterion (2e-3 of the
-// unoccluded value, tests/occlusion_test.cpp) is set by the reference's sampling, and it let the
-// kernel err by up to 2.0e-3 (eight-lane path) and 1.3e-3 (scalar path) of this panel's light
-// here: the visible contour was assembled from crossing points each edge computed for itself, and
-// a gap of δ rad in a contour costs about L·δ however small the source looks (kernels/
-// illuminance.cl, crossing_point). Every path is held to 1e-4 of the panel's unoccluded value,
-// twice the float rounding of the unoccluded formula itself at these points (5.4e-5 measured: the
-// terms of a source 10 m away cancel to 1/175 of their size). Measured: 4.6e-5 eight lanes,
-// 4.5e-5 scalar, 7.1e-5 plain.
+// unoccluded value, tests/occlusion_test.cpp) is set by the reference's sampling and is too loose
+// here: a visible contour assembled from crossing points that each edge computes for itself errs by
+// up to 2.0e-3 (eight lanes) and 1.3e-3 (scalar) of this panel's light, because a gap of δ rad in a
+// contour costs about L·δ however small the source looks; the kernel gives both edges one crossing
+// direction (kernels/illuminance.cl, crossing_point). Every path is held to 1e-4 of the panel's
+// unoccluded value, twice the float rounding of the unoccluded formula itself at these points
+// (5.4e-5 measured: the terms of a source 10 m away cancel to 1/175 of their size). Measured:
+// 4.6e-5 eight lanes, 4.5e-5 scalar, 7.1e-5 plain.
 //
 // The exact value: reference/exact_illuminance (the box projected from P onto the panel's plane is
 // a convex polygon; E is the contour integral in double over the panel minus that polygon).

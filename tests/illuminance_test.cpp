@@ -1,4 +1,4 @@
-// The illuminance kernel on PoCL against closed forms and invariants (issue 2, item 6).
+// The illuminance kernel on PoCL against closed forms and invariants.
 #include <gtest/gtest.h>
 
 #include <numbers>
@@ -13,7 +13,7 @@ namespace {
 
 using namespace penumbra::testing;
 constexpr double kPi = std::numbers::pi;
-// Closed forms are met to 1e-5 relative (issue 2): float kernels, 2^-24 rounding per operation.
+// Closed forms are met to 1e-5 relative: float kernels, 2^-24 rounding per operation.
 constexpr double kClosedFormRelative = 1e-5;
 
 std::vector<double> kernelE(const Scene& scene, const std::vector<SamplePoint>& points) {

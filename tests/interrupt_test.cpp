@@ -1,5 +1,5 @@
 // A `penumbra grid` run stopped by SIGINT (Ctrl-C) or SIGTERM (a scheduler's time limit) leaves
-// nothing partial behind (issue 10): no output folder, or the previous one untouched, and no
+// nothing partial behind: no output folder, or the previous one untouched, and no
 // hidden staging folder. The signal is sent while the result files are being written (the
 // moment the staging folder appears), the moment where a partial file could exist.
 #include <gtest/gtest.h>

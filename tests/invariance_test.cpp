@@ -1,5 +1,6 @@
-// Results do not depend on how a polygon is written down (issue 2, item 6), and a polyhedron
-// source's per-face sum equals the contour integral over its silhouette (Nishita §2.5(1)).
+// Results do not depend on how a polygon is written down (start vertex, orientation), and a
+// polyhedron source's per-face sum equals the contour integral over its silhouette (Nishita
+// §2.5(1)).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Occlusion by the visible-segment method (kernel, float) against the independent reference
-// (host, double, ~n² lattice samples per face with exact ray tests): issue 2, item 6.
+// (host, double, ~n² lattice samples per face with exact ray tests).
 // Criterion: max |E − E_ref| ≤ 2e-3 × E_unoccluded at every point, with n ≥ 1024
 // (256 in the sanitizer build: tests/sanitized_build.hpp). That criterion is the sampled
 // reference's; against the exact reference (reference/exact_illuminance: the occluders' shadows
@@ -195,7 +195,7 @@ TEST(Occlusion, PointsTouchingAnotherSolid) {
   points.push_back({Vec3(0.2, 0.1, 0.0), Vec3::UnitZ(), 0});
   // A point on a side face sees only the sliver of the panel above its horizon, and the kernel
   // errs most there (measured 1.3e-4 of E_unoccluded at (0.5, -0.4, 0.1), both references
-  // agreeing to 1e-6): held to the issue's criterion only.
+  // agreeing to 1e-6): held to the 2e-3 criterion only.
   const Comparison c = compare(scene, points, kOcclusionTolerance);
   EXPECT_GT(c.umbra, 8);
   EXPECT_GT(c.shaded, 20);

@@ -1,5 +1,5 @@
-// Curved primitives (issue 8): the tessellation, primitives in scene files, and a luminous
-// sphere against its closed form and the independent reference.
+// Curved primitives (docs/primitives.md): the tessellation, primitives in scene files, and a
+// luminous sphere against its closed form and the independent reference.
 #include "geometry/primitives.hpp"
 
 #include <gtest/gtest.h>

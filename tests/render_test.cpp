@@ -1,4 +1,4 @@
-// Rendered views (issue 4): visibility against a brute-force host ray cast, pixel illuminance
+// Rendered views: visibility against a brute-force host ray cast, pixel illuminance
 // against the grids and a closed form, interval sampling against the exact mode, supersampling.
 #include "render/renderer.hpp"
 

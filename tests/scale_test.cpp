@@ -1,7 +1,7 @@
-// Scale without surprise (issue 10, item 4): the solid index gives the answers of testing every
-// solid, a planar grid is described rather than stored, host memory does not grow with the
-// number of grid points, and a request the device cannot hold either shrinks to fit or stops
-// with a clear message and no output.
+// Scale without surprise (docs/reliability.md, "Scale"): the solid index gives the answers of
+// testing every solid, a planar grid is described rather than stored, host memory does not grow
+// with the number of grid points, and a request the device cannot hold either shrinks to fit or
+// stops with a clear message and no output.
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <spawn.h>
@@ -282,8 +282,9 @@ TEST(DeviceMemory, AMalformedLimitIsNamed) {
 // Host memory is bounded by the batch (65 536 points), not by the grid: from 2·10^5 to 10^6
 // points the peak RSS may grow by less than 16 bytes a point (12.8 MB in all; measured: under
 // 2 MB, the allocator's and PoCL's noise). Holding any per-point record would break it: the
-// points as SamplePoint are 56 bytes, the grid's positions and normals 48, and penumbra grew by
-// 214 a point before it streamed. (Keeping only E, 8 bytes, would pass: it is the output.)
+// points as SamplePoint are 56 bytes, the grid's positions and normals 48, and a grid evaluated
+// whole rather than streamed holds 214 a point. (Keeping only E, 8 bytes, would pass: it is the
+// output.)
 TEST(HostMemory, PeakRssDoesNotGrowWithThePoints) {
   TempDir dir("penumbra-scale");
   const double smallSpacing = std::sqrt(24.0 / 2e5), largeSpacing = std::sqrt(24.0 / 1e6);

@@ -19,8 +19,7 @@ namespace fs = std::filesystem;
 
 const fs::path kSourceDir = PENUMBRA_SOURCE_DIR;
 const fs::path kOffice = kSourceDir / "data" / "office.yaml";
-const fs::path kCie171 =
-    kSourceDir / "tests" / "validation" / "cie171";  // copy of shared/validation
+const fs::path kCie171 = kSourceDir / "tests" / "validation" / "cie171";  // CIE 171:2006 cases
 
 // The SceneError that parsing `yaml` throws; fails the test when it parses.
 SceneError errorOf(const std::string& yaml, const fs::path& file = "test.yaml") {
@@ -342,9 +341,9 @@ TEST(Pts, ErrorsNameThePtsFileAndLine) {
   }
 }
 
-// Found by the pts fuzz target (tests/fuzz/regressions/pts): a normal of 7.7e157 squared
-// overflowed, and normalized() gave a NaN normal, which the kernel turned into NaN illuminance;
-// a normal of 3e-300 squared underflowed, and was rejected as the zero vector.
+// From the pts fuzz target (tests/fuzz/regressions/pts): a normal of 7.7e157 squared overflows,
+// and normalized() would give a NaN normal, which the kernel turns into NaN illuminance; a normal
+// of 3e-300 squared underflows, and would be rejected as the zero vector.
 TEST(Pts, HugeAndTinyNormalsBecomeUnitVectors) {
   const scenefile::SensorPoints pts =
       scenefile::parsePts("0 0 0 0 1e200 1e200\n0 0 0 -3e-300 0 0\n", "s.pts", "k");

@@ -1,5 +1,5 @@
-// Shadow volumes (issue 3): face classes, and umbra / penumbra volumes held against the exact
-// oracle (host/reference/pyramid_oracle) on random and near-degenerate configurations.
+// Shadow volumes (Nishita §2.1-2.3): face classes, and umbra / penumbra volumes held against the
+// exact oracle (host/reference/pyramid_oracle) on random and near-degenerate configurations.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// `penumbra sweep` and `penumbra merge` as a user runs them: the checks of the sweeps issue. Every
-// case equals `penumbra grid` run on it alone, exactly; a killed run finished by a rerun equals
-// an uninterrupted one and leaves finished cases untouched; shards merged equal one run.
+// `penumbra sweep` and `penumbra merge` as a user runs them (docs/sweeps.md, "Nothing is lost").
+// Every case equals `penumbra grid` run on it alone, exactly; a killed run finished by a rerun
+// equals an uninterrupted one and leaves finished cases untouched; shards merged equal one run.
 #include <gtest/gtest.h>
 
 #include <chrono>

@@ -1,5 +1,6 @@
 #pragma once
-// The PoCL CPU device, opened once per test process (kernels are tested on PoCL, DESIGN.md).
+// The PoCL CPU device, opened once per test process (kernels are tested on PoCL's CPU
+// device, which every machine with the packages has; docs/building.md).
 #include "cl/device.hpp"
 
 namespace penumbra::testing {

@@ -1,7 +1,7 @@
-// The kernel's result does not depend on how many threads PoCL runs (issue 2, item 6; issue 10,
-// within 1e-6 relative): the example office is computed by the `penumbra` binary once with
-// POCL_MAX_PTHREAD_COUNT=1 and once with 2 (the variable is read when PoCL starts, hence separate
-// processes). Two runs alike write the same bytes (issue 10, determinism).
+// The kernel's result does not depend on how many threads PoCL runs (within 1e-6 relative): the
+// example office is computed by the `penumbra` binary once with POCL_MAX_PTHREAD_COUNT=1 and once
+// with 2 (the variable is read when PoCL starts, hence separate processes). Two runs alike write
+// the same bytes (determinism).
 #include <gtest/gtest.h>
 
 #include <cstdlib>

@@ -1,5 +1,6 @@
-// The constraint tone map (issue 5): bounds, the thesis's staircase claim, gradients, pixels that
-// never take a gain from across an edge, and the two baselines against their closed forms.
+// The constraint tone map (docs/tonemap.md): bounds, the thesis's staircase claim, gradients,
+// pixels that never take a gain from across an edge, and the two baselines against their closed
+// forms.
 #include "tonemap/tone_map.hpp"
 
 #include <gtest/gtest.h>

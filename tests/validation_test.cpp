@@ -1,6 +1,5 @@
-// CIE 171:2006 analytical test cases (tests/validation/cie171, a copy of the product owner's
-// shared/validation/cie171): each scene loaded from its file, evaluated by the kernel, compared
-// point by point with the exact E in the CSV beside it.
+// CIE 171:2006 analytical test cases (tests/validation/cie171): each scene loaded from its file,
+// evaluated by the kernel, compared point by point with the exact E in the CSV beside it.
 #include <gtest/gtest.h>
 
 #include <cstdio>

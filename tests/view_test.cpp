@@ -1,4 +1,4 @@
-// Views in scene files (issue 4, deliverable 1): what is read, the defaults, and one test per
+// Views in scene files: what is read, the defaults, and one test per
 // error, each with the line and key a lighting designer is sent to.
 #include <gtest/gtest.h>
 

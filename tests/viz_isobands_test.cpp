@@ -1,4 +1,4 @@
-// Iso-band vector drawings (issue 8): band polygons tile every face, contour vertices carry the
+// Iso-band vector drawings: band polygons tile every face, contour vertices carry the
 // exact E of their level, and the SVG, rasterised by a browser-grade renderer, shows what the
 // raster render shows.
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #pragma once
-// Rendering to a PNG file. Debian's VTK renders through X only (STACK.md): without a display it
-// aborts, so callers check first and say how to get one.
+// Rendering to a PNG file. Debian's VTK renders through X only (docs/building.md): without a
+// display it aborts, so callers check first and say how to get one.
 #include <filesystem>
 
 #include <vtkRenderer.h>

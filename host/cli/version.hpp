@@ -2,8 +2,8 @@
 
 namespace penumbra {
 
-// Keep in step with project(penumbra VERSION ...) in CMakeLists.txt; the build must not need git
-// metadata (STACK.md pitfall 9), so the version is written down here.
+// Keep in step with project(penumbra VERSION ...) in CMakeLists.txt; the build must work from a
+// copy without .git (docs/building.md), so the version is written down here.
 inline constexpr const char* kVersion = "0.1.0";
 
 }  // namespace penumbra

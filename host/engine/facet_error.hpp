@@ -1,6 +1,7 @@
 #pragma once
 // How well a tessellated curved surface stands in for the smooth one as a receiver: E on the
-// facets against E on the smooth surface at the same points (issue 8: "measure whether it pays").
+// facets against E on the smooth surface at the same points, to measure whether more facets pay
+// (docs/primitives.md).
 // Points are taken on the smooth surface along directions from the primitive's centre; the
 // facet point is where the same ray meets the polyhedron, with the facet's normal.
 #include <vector>

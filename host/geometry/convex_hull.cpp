@@ -1,7 +1,7 @@
 // ConvexPolyhedron::hull: a 3-D convex hull in double precision with an absolute tolerance.
 //
 // Why penumbra has its own hull: Eigen has none, and no package in the project's dependency
-// list (STACK.md: Debian 12 packages) offers one; CGAL and qhull are not on that list. The
+// list (Debian 12 packages, docs/building.md) offers one; CGAL and qhull are not on that list. The
 // polyhedra here are small (boxes, prisms, faceted primitives, clipped occluders: tens to a few
 // thousand points), so a plain quickhull is fast enough and short enough to read.
 //

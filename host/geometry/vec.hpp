@@ -1,5 +1,5 @@
 #pragma once
-// Host geometry is double precision (DESIGN.md): Eigen's fixed-size vectors.
+// Host geometry is double precision; kernels get floats made from it. Eigen's fixed-size vectors.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 

@@ -1,7 +1,8 @@
 #pragma once
-// The exact questions the shadow volumes answer, asked directly (DESIGN.md step 3: "the oracle
-// tests hold the planes against"). Plain double-precision geometry, sharing no code with
-// host/shadow: a separating-axis test between two convex sets and a clipped segment.
+// The exact questions the shadow volumes answer, asked directly: the oracle the shadow-volume
+// tests hold the volumes' planes against (tests/shadow_volume_test.cpp). Plain double-precision
+// geometry, sharing no code with host/shadow: a separating-axis test between two convex sets and a
+// clipped segment.
 #include <span>
 
 #include "geometry/convex_polyhedron.hpp"

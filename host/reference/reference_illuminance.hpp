@@ -1,5 +1,5 @@
 #pragma once
-// The independent reference (issue 2, item 5): dense deterministic sampling of each source face
+// The independent reference: dense deterministic sampling of each source face
 // (about n² equal cells of a centred Fibonacci lattice, each sampled at its midpoint; the .cpp
 // says why not an n × n grid of cells) with exact segment-versus-convex-polyhedron tests, in
 // double precision on the host. Shares no code with the kernel path.

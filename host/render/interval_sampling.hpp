@@ -1,5 +1,5 @@
 #pragma once
-// Interval sampling along scanlines (Nishita §2.5, DESIGN.md step 6): illuminance is computed
+// Interval sampling along scanlines (Nishita §2.5): illuminance is computed
 // exactly every k samples of a row and linearly interpolated between, except where that would
 // cross a boundary. k = 1 computes every sample and is the reference for the others.
 //

@@ -1,8 +1,9 @@
 #pragma once
 // The scene as written in the file, before any geometry is built: plain numbers, each part with
 // where it came from. Loading is two passes (read, then build) because the tolerances that decide
-// "planar", "convex" or "inside its wall" are relative to the scene's size (DESIGN.md), and that
-// size is known only once every coordinate in the file has been read.
+// "planar", "convex" or "inside its wall" are relative to the scene's size
+// (geometry/tolerance.hpp), and that size is known only once every coordinate in the file has been
+// read.
 #include <optional>
 #include <string>
 #include <variant>

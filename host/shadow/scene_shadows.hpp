@@ -1,5 +1,5 @@
 #pragma once
-// The shadow geometry of a scene, built once on the host (DESIGN.md step 2-3): for every emitting
+// The shadow geometry of a scene, built once on the host (Nishita §2.1-2.4): for every emitting
 // face, every solid clipped to that face's front half-space (Nishita: "the portion of the
 // positive-space of S_e"; a ceiling slab around a flush panel becomes empty or thin) with its
 // umbra and penumbra volumes. Solids left with no volume cast nothing and are dropped.

@@ -1,7 +1,7 @@
 #pragma once
-// The display step (DESIGN.md, Fang's thesis ch. 4-5): an HDR render and its face-id AOV in,
-// 8-bit display values out. No files here: the render command calls this in-process and the
-// output layer writes the PNG and the statistics.
+// The display step (Fang's thesis on constraint-based rendering for HDR scenes, ch. 4-5): an HDR
+// render and its face-id AOV in, 8-bit display values out. No files here: the render command calls
+// this in-process and the output layer writes the PNG and the statistics.
 #include "image/images.hpp"
 #include "tonemap/tone_map_options.hpp"
 

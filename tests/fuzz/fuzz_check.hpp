@@ -1,9 +1,9 @@
 #pragma once
-// What every fuzz target asserts about a rejected input (issue 10): it is one SceneError, whose
-// text starts with the file it is about (the input, or a file the input names: a study's base
-// scene, a scene's .pts) and has a line and a message, so that a designer is sent to the spot.
-// Anything else that escapes (a YAML::Exception, std::out_of_range, ...) is a bug: the target
-// aborts and libFuzzer keeps the input.
+// What every fuzz target asserts about a rejected input (docs/reliability.md): it is one
+// SceneError, whose text starts with the file it is about (the input, or a file the input names: a
+// study's base scene, a scene's .pts) and has a line and a message, so that a designer is sent to
+// the spot. Anything else that escapes (a YAML::Exception, std::out_of_range, ...) is a bug: the
+// target aborts and libFuzzer keeps the input.
 #include <cstdio>
 #include <cstdlib>
 #include <exception>

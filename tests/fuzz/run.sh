@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the libFuzzer targets (issue 10, docs/reliability.md):
+# Runs the libFuzzer targets (docs/reliability.md):
 #   tests/fuzz/run.sh SECONDS [BUILD_DIR]
 # SECONDS are shared out between the three targets. BUILD_DIR (default build-sanitize) is configured
 # with CC=clang-14 CXX=clang++-14 -DPENUMBRA_FUZZ=ON and the targets built. First every saved
