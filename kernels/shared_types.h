@@ -1,6 +1,6 @@
-/* Structs that cross the host/kernel boundary, declared once (DESIGN.md, "Rules of the house").
- * Plain C with explicit 16-byte-aligned layout; the host static_asserts the sizes. Included by
- * the host (C++) and pasted in front of every kernel source by cmake/EmbedKernels.cmake. */
+/* Structs that cross the host/kernel boundary, declared once (docs/architecture.md). Plain C with
+ * explicit 16-byte-aligned layout; the host static_asserts the sizes. Included by the host (C++)
+ * and by kernel files by name (`#include "shared_types.h"`, resolved by cmake/EmbedKernels.cmake). */
 #ifndef PENUMBRA_SHARED_TYPES_H
 #define PENUMBRA_SHARED_TYPES_H
 
