@@ -71,12 +71,12 @@ inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane,
  * point x (from P) at depth h towards the face is inside iff u0·h <= x·axisU·hS <= u1·h (and
  * the same in v), hS the face's depth. */
 inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8 v, PnAperture ap,
-                                  float4 n, PnOccluder o, __global const float4* overts,
+                                  float4 n, PnOccluder o, const PnSceneTables* tables,
                                   float eps_length) {
   float8 hs = -v.depth, margin = eps_length * hs;
   int8 u0 = -1, u1 = -1, v0 = -1, v1 = -1;
   for (int k = 0; k < o.vertexCount; ++k) {
-    float4 q = overts[o.firstVertex + k];
+    float4 q = tables->occluderVertices[o.firstVertex + k];
     float8 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
     float8 xu = (ap.axisU.x * dx + ap.axisU.y * dy + ap.axisU.z * dz) * hs;
     float8 xv = (ap.axisV.x * dx + ap.axisV.y * dy + ap.axisV.z * dz) * hs;

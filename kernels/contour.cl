@@ -21,25 +21,24 @@
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
  * on the contour. */
-inline bool faces_point(PnOccluder o, int face, float3 p, __global const float4* planes,
+inline bool faces_point(PnOccluder o, int face, float3 p, const PnSceneTables* tables,
                         float eps_length) {
-  float4 pl = planes[o.firstPlane + face];
+  float4 pl = tables->planes[o.firstPlane + face];
   return dot(pl.xyz, p) - pl.w > eps_length;
 }
 
 /* Whether a face sees P is tested per edge rather than kept in a bit mask, so that a solid may
  * have any number of faces (a finely faceted sphere has hundreds). */
-inline bool contour_edge(int e, PnOccluder o, float3 p, __global const int4* edges,
-                         __global const float4* overts, __global const float4* planes,
+inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tables,
                          float eps_length, float3* a, float3* b) {
-  int4 ed = edges[o.firstEdge + e];
-  bool left_front = faces_point(o, ed.z, p, planes, eps_length);
-  bool right_front = faces_point(o, ed.w, p, planes, eps_length);
+  int4 ed = tables->edges[o.firstEdge + e];
+  bool left_front = faces_point(o, ed.z, p, tables, eps_length);
+  bool right_front = faces_point(o, ed.w, p, tables, eps_length);
   if (left_front == right_front) return false;
   /* Run it as the face that does not see P does: that face's loop goes from -> to when it is
    * the left face. */
-  float3 from = overts[o.firstVertex + ed.x].xyz - p;
-  float3 to = overts[o.firstVertex + ed.y].xyz - p;
+  float3 from = tables->occluderVertices[o.firstVertex + ed.x].xyz - p;
+  float3 to = tables->occluderVertices[o.firstVertex + ed.y].xyz - p;
   if (left_front) {
     *a = to;
     *b = from;

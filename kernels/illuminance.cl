@@ -12,27 +12,30 @@
 
 /* The kernel: E (lx) at PN_LANES points per work-item, summed over every source face, and each
  * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
- * an occluder may block), written source by source with row length class_stride.
- * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES.
- * use_volumes: 0 the plain path (every occluder, separating planes, scalar penumbra path); bit 0
- * culling (face classes, candidates, volumes, apertures); bit 1 with it, the eight-lane penumbra
- * path. */
+ * an occluder may block), written source by source with row length params.sourceStride.
+ * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. params.paths
+ * selects the path (PN_PATH_*). The host binds these arguments by name and in this order
+ * (lighting/kernel_scene.cpp; tests/launch_interface_test.cpp holds the two together). */
 
-__kernel void illuminance(__global const float* px_, __global const float* py_,
-                          __global const float* pz_, __global const float* nx_,
-                          __global const float* ny_, __global const float* nz_,
-                          __global const int* own_, __global const PnSourceFace* faces,
-                          const int face_count, __global const float4* vertices,
-                          __global const PnOccluder* occluders, __global const float4* planes,
-                          __global const int4* edges, __global const float4* overts,
-                          const float eps_length, __global const PnPatchFace* patch_faces,
-                          __global const int* candidates, __global const PnAperture* apertures,
-                          const int use_volumes, const int per_source, __global float* out,
-                          __global int* errors, __global uchar* classes, const int class_stride) {
+__kernel void illuminance(
+    const PnLaunchParams params, __global const float* point_x, __global const float* point_y,
+    __global const float* point_z, __global const float* normal_x, __global const float* normal_y,
+    __global const float* normal_z, __global const int* point_solid,
+    __global const PnSourceFace* faces, __global const float4* source_vertices,
+    __global const PnOccluder* occluders, __global const float4* planes, __global const int4* edges,
+    __global const float4* occluder_vertices, __global const PnAperture* apertures,
+    __global const PnPatchFace* patch_faces, __global const int* candidates,
+    __global float* illuminance_lx, __global int* errors, __global uchar* classes) {
+  const PnSceneTables tables = {faces,     source_vertices, occluders,
+                                planes,    edges,           occluder_vertices,
+                                apertures, patch_faces,     candidates};
+  const bool culling = (params.paths & PN_PATH_CULLING) != 0;
+  const bool lanes_path = culling && (params.paths & PN_PATH_LANES) != 0;
+  const float eps_length = params.epsLength;
   const size_t g = get_global_id(0);
-  float8 px = vload8(g, px_), py = vload8(g, py_), pz = vload8(g, pz_);
-  float8 nx = vload8(g, nx_), ny = vload8(g, ny_), nz = vload8(g, nz_);
-  int8 own = vload8(g, own_);
+  float8 px = vload8(g, point_x), py = vload8(g, point_y), pz = vload8(g, point_z);
+  float8 nx = vload8(g, normal_x), ny = vload8(g, normal_y), nz = vload8(g, normal_z);
+  int8 own = vload8(g, point_solid);
   float lane_px[PN_LANES], lane_py[PN_LANES], lane_pz[PN_LANES];
   float lane_nx[PN_LANES], lane_ny[PN_LANES], lane_nz[PN_LANES];
   int lane_own[PN_LANES];
@@ -44,13 +47,14 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
   vstore8(nz, 0, lane_nz);
   vstore8(own, 0, lane_own);
 
-  /* per_source: out holds E per source ([source][padded point], like classes); else the sum. */
+  /* params.bySource: illuminance_lx holds E per source ([source][padded point], like classes); else
+   * the sum. */
   PnSum8 e_total = {0.0f, 0.0f}, e_source = {0.0f, 0.0f};
   int8 reaches = 0, blocked = 0; /* per source, reset after its last face */
   int error = 0;
-  for (int f = 0; f < face_count; ++f) {
-    PnSourceFace face = faces[f];
-    PnPatchFace pf = patch_faces[g * face_count + f];
+  for (int f = 0; f < params.faceCount; ++f) {
+    PnSourceFace face = tables.faces[f];
+    PnPatchFace pf = tables.patchFaces[g * params.faceCount + f];
     if (pf.faceClass == PN_CLASS_UMBRA) /* the host found every lane in one occluder's umbra */
       blocked |= ((int8)(pf.facingLanes) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1;
     else if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
@@ -60,23 +64,23 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       PnAperture ap;
       view.use = 0;
       view.u0 = view.u1 = view.v0 = view.v1 = view.depth = 0.0f;
-      if (use_volumes && face.aperture >= 0) {
-        ap = apertures[face.aperture];
+      if (culling && face.aperture >= 0) {
+        ap = tables.apertures[face.aperture];
         view = aperture_view8(px, py, pz, face, ap, eps_length);
       }
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
       if (!all(view.use))
-        e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, vertices)
-                     ? unoccluded_face8(px, py, pz, nx, ny, nz, face, vertices)
-                     : whole_face8(px, py, pz, nx, ny, nz, face, vertices);
+        e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, &tables)
+                     ? unoccluded_face8(px, py, pz, nx, ny, nz, face, &tables)
+                     : whole_face8(px, py, pz, nx, ny, nz, face, &tables);
       if (pn_any(view.use & ~dark))
         e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
       int8 inside[PN_VEC_MASKS]; /* per candidate, the lanes in its penumbra volume */
-      ShadowTests t = shadow_tests8(px, py, pz, own, face, pf, candidates, use_volumes, view, ap,
-                                    occluders, planes, overts, eps_length, inside);
+      ShadowTests t =
+          shadow_tests8(px, py, pz, own, face, pf, culling, view, ap, &tables, eps_length, inside);
       t.shaded &= ~dark;
       t.umbra |= dark;
       facing |= dark;
@@ -84,14 +88,13 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       int8 scalar_lanes = t.shaded;
       /* The eight-lane path; the lanes whose occluders it could not hold beside the others' get
        * another call among themselves, whose union of occluders is smaller, while that helps. */
-      if (use_volumes & 2) {
+      if (lanes_path) {
         int8 pending = t.shaded;
         scalar_lanes = 0;
         for (int pass = 0; pass < PN_VEC_PASSES && pn_any(pending); ++pass) {
           int8 asked = pending, scalar;
-          float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, candidates,
-                                        view, ap, vertices, occluders, planes, edges, overts,
-                                        eps_length, inside, &pending, &scalar);
+          float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, view, ap,
+                                        &tables, eps_length, inside, &pending, &scalar);
           scalar_lanes |= scalar;
           int8 done = asked & ~(pending | scalar);
           e_face = select(e_face, e_pen, done);
@@ -123,9 +126,8 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
           if (lane_ap[l])
             for (int i = 0; i < 4; ++i)
               corners[i] = (float3)(lane_cx[i][l], lane_cy[i][l], lane_cz[i][l]);
-          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, candidates, use_volumes, vertices,
-                                    occluders, planes, edges, overts, eps_length, lane_ap[l] != 0,
-                                    corners, &error);
+          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, culling, &tables, eps_length,
+                                    lane_ap[l] != 0, corners, &error);
         }
         e_face = vload8(0, lane_e);
       }
@@ -133,12 +135,13 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       reaches |= facing & ~t.umbra;
       blocked |= facing & (t.shaded | t.umbra);
     }
-    if (f + 1 == face_count || faces[f + 1].source != face.source) {
+    if (f + 1 == params.faceCount || tables.faces[f + 1].source != face.source) {
       int8 cls = (reaches & 1) | ((blocked & 1) << 1);
-      vstore8(convert_uchar8(cls), 0, classes + (size_t)face.source * class_stride + g * PN_LANES);
-      if (per_source)
+      vstore8(convert_uchar8(cls), 0,
+              classes + (size_t)face.source * params.sourceStride + g * PN_LANES);
+      if (params.bySource)
         vstore8(e_source.s + e_source.c, 0,
-                out + (size_t)face.source * class_stride + g * PN_LANES);
+                illuminance_lx + (size_t)face.source * params.sourceStride + g * PN_LANES);
       pn_sum_add8(&e_total, e_source.s);
       pn_sum_add8(&e_total, e_source.c);
       e_source.s = e_source.c = 0.0f;
@@ -146,7 +149,6 @@ __kernel void illuminance(__global const float* px_, __global const float* py_,
       blocked = 0;
     }
   }
-  if (!per_source) vstore8(e_total.s + e_total.c, g, out);
+  if (!params.bySource) vstore8(e_total.s + e_total.c, g, illuminance_lx);
   errors[g] = error;
 }
-

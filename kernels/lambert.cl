@@ -80,13 +80,13 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
  * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
  * gives there. */
 inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                          PnSourceFace face, __global const float4* vertices) {
+                          PnSourceFace face, const PnSceneTables* tables) {
   const int m = face.vertexCount;
-  float4 q = vertices[face.firstVertex];
+  float4 q = tables->sourceVertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
-    q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
+    q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
     float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
     pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz));
     ax = bx;
@@ -98,10 +98,10 @@ inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny,
 }
 
 inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                          PnSourceFace face, __global const float4* vertices) {
+                          PnSourceFace face, const PnSceneTables* tables) {
   int8 below = 0;
   for (int i = 0; i < face.vertexCount; ++i) {
-    float4 q = vertices[face.firstVertex + i];
+    float4 q = tables->sourceVertices[face.firstVertex + i];
     float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
     below |= nx * ax + ny * ay + nz * az < 0.0f;
   }
@@ -109,15 +109,15 @@ inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny,
 }
 
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                               PnSourceFace face, __global const float4* vertices) {
+                               PnSourceFace face, const PnSceneTables* tables) {
   HorizonSum8 h;
   horizon_begin8(&h);
   const int m = face.vertexCount;
-  float4 q = vertices[face.firstVertex];
+  float4 q = tables->sourceVertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
   float8 ha = nx * ax + ny * ay + nz * az;
   for (int i = 0; i < m; ++i) {
-    q = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
+    q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
     float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
     float8 hb = nx * bx + ny * by + nz * bz;
     horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);

@@ -1,4 +1,5 @@
-/* Occluder culling shared by both paths, and the shadow tests of one face. An occluder cannot shade P from the face when
+/* Occluder culling shared by both paths, and the shadow tests of one face. An occluder cannot shade
+ * P from the face when
  *  - P lies on it (the solid P belongs to), or
  *  - one of its separating planes (faces whose closed outside holds the whole source face) has
  *    P in its closed outside too: every segment P→source then stays in that half-space, or
@@ -8,10 +9,10 @@
 
 #include "aperture.cl"
 
-inline bool occluder_separated(float3 p, PnOccluder o, __global const float4* planes,
+inline bool occluder_separated(float3 p, PnOccluder o, const PnSceneTables* tables,
                                float eps_length) {
   for (int j = 0; j < o.separatingCount; ++j) {
-    float4 pl = planes[o.firstSeparating + j];
+    float4 pl = tables->planes[o.firstSeparating + j];
     if (dot(pl.xyz, p) - pl.w >= -eps_length) return true;
   }
   return false;
@@ -20,10 +21,10 @@ inline bool occluder_separated(float3 p, PnOccluder o, __global const float4* pl
 /* The shadow volumes of an occluder for this face (host/shadow/shadow_volume.hpp): inside the
  * penumbra volume grown by eps the occluder may shade P; deeper than eps inside the umbra
  * volume it hides the whole face. Both err on the safe side (the exact path decides). */
-inline bool in_penumbra_volume(float3 p, PnOccluder o, __global const float4* planes,
+inline bool in_penumbra_volume(float3 p, PnOccluder o, const PnSceneTables* tables,
                                float eps_length) {
   for (int j = 0; j < o.penumbraCount; ++j) {
-    float4 pl = planes[o.firstPenumbra + j];
+    float4 pl = tables->planes[o.firstPenumbra + j];
     if (dot(pl.xyz, p) - pl.w > eps_length) return false;
   }
   return true;
@@ -34,15 +35,15 @@ inline bool in_penumbra_volume(float3 p, PnOccluder o, __global const float4* pl
 inline int occluder_count(PnPatchFace pf, PnSourceFace face) {
   return pf.candidateCount < 0 ? face.occluderCount : pf.candidateCount;
 }
-inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face,
-                          __global const int* candidates) {
-  return pf.candidateCount < 0 ? face.firstOccluder + i : candidates[pf.firstCandidate + i];
+inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face, const PnSceneTables* tables) {
+  return pf.candidateCount < 0 ? face.firstOccluder + i : tables->candidates[pf.firstCandidate + i];
 }
 
-/* Shadow tests of one face for eight lanes (docs/method.md, "Shadow volumes and culling"). With volumes: a lane deeper than
- * eps inside an umbra volume gets 0; one inside a penumbra volume (grown by eps) takes the
- * penumbra path; the rest keep the unoccluded value. Without (the plain path): a lane takes the
- * penumbra path unless every occluder is its own solid or separated from the face. */
+/* Shadow tests of one face for eight lanes (docs/method.md, "Shadow volumes and culling"). With
+ * culling: a lane deeper than eps inside an umbra volume gets 0; one inside a penumbra volume
+ * (grown by eps) takes the penumbra path; the rest keep the unoccluded value. Without (the plain
+ * path): a lane takes the penumbra path unless every occluder is its own solid or separated from
+ * the face. */
 
 typedef struct {
   int8 umbra;  /* some occluder hides the whole face */
@@ -50,23 +51,21 @@ typedef struct {
 } ShadowTests;
 
 ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
-                          PnPatchFace pf, __global const int* candidates, int use_volumes,
-                          ApertureView8 view, PnAperture ap, __global const PnOccluder* occluders,
-                          __global const float4* planes, __global const float4* overts,
-                          float eps_length, int8* inside_out) {
+                          PnPatchFace pf, bool culling, ApertureView8 view, PnAperture ap,
+                          const PnSceneTables* tables, float eps_length, int8* inside_out) {
   const int8 aperture = view.use;
-  ShadowTests t;
-  t.umbra = 0;
-  t.shaded = 0;
+  ShadowTests tests;
+  tests.umbra = 0;
+  tests.shaded = 0;
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
-    PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
+    PnOccluder o = tables->occluders[occluder_index(i, pf, face, tables)];
     int8 inside = own != (int8)(o.solid);
     if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
-    if (use_volumes) {
+    if (culling) {
       if (i < PN_VEC_MASKS) inside_out[i] = 0;
       for (int j = 0; j < o.penumbraCount && pn_any(inside); ++j) {
-        float4 pl = planes[o.firstPenumbra + j];
+        float4 pl = tables->planes[o.firstPenumbra + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
       if (!pn_any(inside)) continue;
@@ -74,26 +73,26 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
        * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
       if (pn_any(inside & aperture)) {
         inside &= ~(aperture &
-                    misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+                    misses_aperture_view8(px, py, pz, view, ap, face.plane, o, tables, eps_length));
         if (!pn_any(inside)) continue;
       }
       if (i < PN_VEC_MASKS) inside_out[i] = inside;
-      t.shaded |= inside;
+      tests.shaded |= inside;
       if (o.umbraCount == 0) continue;
       int8 hidden = inside;
       for (int j = 0; j < o.umbraCount && pn_any(hidden); ++j) {
-        float4 pl = planes[o.firstUmbra + j];
+        float4 pl = tables->planes[o.firstUmbra + j];
         hidden &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
       }
-      t.umbra |= hidden;
+      tests.umbra |= hidden;
     } else {
       for (int j = 0; j < o.separatingCount; ++j) {
-        float4 pl = planes[o.firstSeparating + j];
+        float4 pl = tables->planes[o.firstSeparating + j];
         inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
       }
-      t.shaded |= inside;
+      tests.shaded |= inside;
     }
   }
-  t.shaded &= ~t.umbra;
-  return t;
+  tests.shaded &= ~tests.umbra;
+  return tests;
 }

@@ -8,10 +8,8 @@
  * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
  * those this path cannot take. */
 float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz, int8 own,
-                      int8 asked, PnSourceFace face, PnPatchFace pf, __global const int* candidates,
-                      ApertureView8 view, PnAperture ap, __global const float4* vertices,
-                      __global const PnOccluder* occluders, __global const float4* planes,
-                      __global const int4* edges, __global const float4* overts, float eps_length,
+                      int8 asked, PnSourceFace face, PnPatchFace pf, ApertureView8 view,
+                      PnAperture ap, const PnSceneTables* tables, float eps_length,
                       const int8* inside, int8* rest, int8* scalar) {
   *rest = 0;
   *scalar = 0;
@@ -23,7 +21,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   /* The source polygon per lane, from P: the face, or the lane's visible rectangle. */
   float8 sx[PN_VEC_SOURCE], sy[PN_VEC_SOURCE], sz[PN_VEC_SOURCE], sh[PN_VEC_SOURCE];
   for (int i = 0; i < m; ++i) {
-    float4 q = vertices[face.firstVertex + i];
+    float4 q = tables->sourceVertices[face.firstVertex + i];
     sx[i] = q.x - px;
     sy[i] = q.y - py;
     sz[i] = q.z - pz;
@@ -89,17 +87,17 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
      * the aperture, the penumbra volume, the aperture's pyramid): only what it does not test. */
     if (i < PN_VEC_MASKS) act &= inside[i];
     if (!pn_any(act)) continue;
-    PnOccluder o = occluders[occluder_index(i, pf, face, candidates)];
+    PnOccluder o = tables->occluders[occluder_index(i, pf, face, tables)];
     if (i >= PN_VEC_MASKS) {
       act &= own != (int8)(o.solid);
       if (o.behindAperture) act &= ~view.use;
       for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
-        float4 pl = planes[o.firstPenumbra + j];
+        float4 pl = tables->planes[o.firstPenumbra + j];
         act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
       }
     }
     for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
-      float4 pl = planes[o.firstSeparating + j];
+      float4 pl = tables->planes[o.firstSeparating + j];
       act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
     }
     if (!pn_any(act)) continue;
@@ -110,7 +108,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
       act &= (smx[j] * cx + smy[j] * cy + smz[j] * cz) <= o.bound.w;
     if (i >= PN_VEC_MASKS && pn_any(act & view.use))
       act &= ~(view.use &
-               misses_aperture_view8(px, py, pz, view, ap, face.plane, o, overts, eps_length));
+               misses_aperture_view8(px, py, pz, view, ap, face.plane, o, tables, eps_length));
     if (!pn_any(act)) continue;
     if (o.planeCount > PN_VEC_FACES) {
       *scalar |= act;
@@ -123,7 +121,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     int8 front[PN_VEC_FACES];
     int8 any_front = 0;
     for (int j = 0; j < o.planeCount; ++j) {
-      float4 pl = planes[o.firstPlane + j];
+      float4 pl = tables->planes[o.firstPlane + j];
       front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
       any_front |= front[j];
     }
@@ -134,7 +132,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     int c = cs.first[cs.na];
     bool full = false;
     for (int k = 0; k < o.edgeCount; ++k) {
-      int4 ed = edges[o.firstEdge + k];
+      int4 ed = tables->edges[o.firstEdge + k];
       int8 lf = front[ed.z], rf = front[ed.w];
       int8 on = act & (lf ^ rf);
       if (!pn_any(on)) continue;
@@ -142,7 +140,8 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         full = true;
         break;
       }
-      float4 f = overts[o.firstVertex + ed.x], g = overts[o.firstVertex + ed.y];
+      float4 f = tables->occluderVertices[o.firstVertex + ed.x],
+             g = tables->occluderVertices[o.firstVertex + ed.y];
       float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
       float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
       EdgePlane8* ep = &cs.p[c];
@@ -165,7 +164,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     int8 whole = act;
     for (int k = cs.first[cs.na]; k < c; ++k) whole &= ~(cs.e[k].on & ~cs.p[k].on);
     cs.whole[cs.na] = whole;
-    cs.occ[cs.na] = occluder_index(i, pf, face, candidates);
+    cs.occ[cs.na] = occluder_index(i, pf, face, tables);
     BoundCone8* k = &cs.cone[cs.na];
     float8 dist = sqrt(cx * cx + cy * cy + cz * cz);
     float8 sin_a = o.bound.w / dist;
@@ -187,7 +186,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
    * adds nothing to the union: it covers no edge v does not cover more, and its own edges are
    * covered. Its lanes are dropped; the pieces, and so the sums, are the same without it. */
   for (int u = 0; u < cs.na && cs.na > 1; ++u) {
-    PnOccluder ou = occluders[cs.occ[u]];
+    PnOccluder ou = tables->occluders[cs.occ[u]];
     int8 hidden_all = 0;
     for (int v = 0; v < cs.na && pn_any(cs.act[u] & ~hidden_all); ++v) {
       if (v == u) continue;
@@ -202,7 +201,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         const EdgePlane8* e = &cs.p[k];
         if (!pn_any(hidden & e->on)) continue;
         for (int q = 0; q < ou.vertexCount && pn_any(hidden); ++q) {
-          float4 x = overts[ou.firstVertex + q];
+          float4 x = tables->occluderVertices[ou.firstVertex + q];
           hidden &=
               ~e->on | (e->mx * (x.x - px) + e->my * (x.y - py) + e->mz * (x.z - pz) > eps_length);
         }

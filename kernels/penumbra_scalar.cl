@@ -54,12 +54,12 @@ void clip_source(PenumbraState* st, float3 keep) {
  *    corner, a point on the edge two boxes share) and S' minus the wedge is not convex;
  *    penumbra_face sums it in convex pieces (wedge_pieces_sum). */
 int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
-                  __global const float4* planes, float eps_length, float3* limiting, int capacity,
+                  const PnSceneTables* tables, float eps_length, float3* limiting, int capacity,
                   float3* opposed) {
   int count = -1;
   float most = 2.0f;
   for (int j = 0; j < o.planeCount; ++j) {
-    float4 pl = planes[o.firstPlane + j];
+    float4 pl = tables->planes[o.firstPlane + j];
     if (dot(pl.xyz, p) - pl.w < -eps_length) continue; /* this face does not pass through P */
     if (count < 0) count = 0;
     bool holds_source = true;
@@ -79,14 +79,14 @@ int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
 /* The plain path's test (kept as the foundation had it): the bounding sphere against the pyramid
  * P + cone(face). */
 inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
-                                   __global const float4* vertices) {
+                                   const PnSceneTables* tables) {
   float3 c = o.bound.xyz - p;
   float r = o.bound.w;
   if (dot(n, c) < -r) return true;
   const int m = face.vertexCount;
-  float3 a = vertices[face.firstVertex].xyz - p;
+  float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
   for (int i = 0; i < m; ++i) {
-    float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+    float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
     /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
     float3 side = cross(a, b);
     if (dot(side, c) > r * length(side)) return true;
@@ -100,7 +100,7 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
  * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
  * outside a side plane by more than eps_length. */
 bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
-                            bool vertices, __global const float4* overts, float eps_length) {
+                            bool vertices, const PnSceneTables* tables, float eps_length) {
   float3 c = o.bound.xyz - p;
   float r = o.bound.w;
   if (dot(n, c) < -r) return true;
@@ -111,7 +111,7 @@ bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOcclu
     float3 m = st->sm[i]; /* a zero normal (no plane) never has the vertices outside */
     bool out = true;
     for (int k = 0; k < o.vertexCount && out; ++k)
-      out = dot(m, overts[o.firstVertex + k].xyz - p) > eps_length;
+      out = dot(m, tables->occluderVertices[o.firstVertex + k].xyz - p) > eps_length;
     if (out) return true;
   }
   return false;
@@ -265,11 +265,8 @@ float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX
 
 /* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
  * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
-float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf,
-                    __global const int* candidates, int use_volumes,
-                    __global const float4* vertices, __global const PnOccluder* occluders,
-                    __global const float4* planes, __global const int4* edges,
-                    __global const float4* overts, float eps_length, bool aperture,
+float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
+                    const PnSceneTables* tables, float eps_length, bool aperture,
                     const float3* corners, int* error) {
   if (dot(face.plane.xyz, p) - face.plane.w <= 0.0f) return 0.0f;
   PenumbraState st;
@@ -283,10 +280,10 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     clip_source(&st, n);
   } else {
     const int m = face.vertexCount;
-    float3 a = vertices[face.firstVertex].xyz - p;
+    float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
     float ha = dot(n, a);
     for (int i = 0; i < m; ++i) {
-      float3 b = vertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+      float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
       float hb = dot(n, b);
       if (ha >= 0.0f) st.sv[st.ns++] = a;
       if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
@@ -317,14 +314,13 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   int wedges = 0;
   const int count = occluder_count(pf, face);
   for (int i = 0; i < count; ++i) {
-    const int k = occluder_index(i, pf, face, candidates);
-    PnOccluder o = occluders[k];
+    PnOccluder o = tables->occluders[occluder_index(i, pf, face, tables)];
     if (aperture && o.behindAperture) continue;
-    if (o.solid == own || occluder_separated(p, o, planes, eps_length)) continue;
-    if (use_volumes && !in_penumbra_volume(p, o, planes, eps_length)) continue;
+    if (o.solid == own || occluder_separated(p, o, tables, eps_length)) continue;
+    if (culling && !in_penumbra_volume(p, o, tables, eps_length)) continue;
     bool any_front = false;
     for (int j = 0; j < o.planeCount && !any_front; ++j)
-      any_front = faces_point(o, j, p, planes, eps_length);
+      any_front = faces_point(o, j, p, tables, eps_length);
     if (!any_front) {
       if (contacts == PN_MAX_CONTACTS) {
         *error |= PN_ERROR_TOO_MANY_CONTACTS;
@@ -333,7 +329,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
       ++contacts;
       float3 limiting[PN_MAX_WEDGE_FACES], opposed;
       const int m =
-          contact_faces(&st, p, n, o, planes, eps_length, limiting, PN_MAX_WEDGE_FACES, &opposed);
+          contact_faces(&st, p, n, o, tables, eps_length, limiting, PN_MAX_WEDGE_FACES, &opposed);
       if (m < 0) continue;
       if (m == 0) return 0.0f;
       if (m >= 2 && m <= PN_MAX_WEDGE_FACES && wedges < PN_MAX_WEDGES) {
@@ -349,8 +345,8 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
         st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
       continue;
     }
-    if (use_volumes ? outside_source_pyramid(&st, p, n, o, aperture, overts, eps_length)
-                    : sphere_outside_pyramid(p, n, o, face, vertices))
+    if (culling ? outside_source_pyramid(&st, p, n, o, aperture, tables, eps_length)
+                : sphere_outside_pyramid(p, n, o, face, tables))
       continue;
     if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
@@ -359,7 +355,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     int c = st.first_contour[st.na];
     for (int e = 0; e < o.edgeCount; ++e) {
       float3 ea, eb;
-      if (!contour_edge(e, o, p, edges, overts, planes, eps_length, &ea, &eb)) continue;
+      if (!contour_edge(e, o, p, tables, eps_length, &ea, &eb)) continue;
       if (c == PN_MAX_CONTOUR_EDGES) {
         *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
         break;

@@ -5,6 +5,21 @@
 
 #include "shared_types.h"
 
+/* The scene's tables and the batch's patch table, gathered by the entry from its arguments (one
+ * __global argument each: a kernel argument may not be a struct holding pointers) and passed to
+ * the functions that read them. */
+typedef struct {
+  __global const PnSourceFace* faces;
+  __global const float4* sourceVertices;
+  __global const PnOccluder* occluders;
+  __global const float4* planes; /* occluder faces, separating, penumbra and umbra planes */
+  __global const int4* edges;    /* per occluder: (from, to, left face, right face) */
+  __global const float4* occluderVertices;
+  __global const PnAperture* apertures;
+  __global const PnPatchFace* patchFaces; /* [work-item][face] */
+  __global const int* candidates;         /* occluder indices, listed by PnPatchFace */
+} PnSceneTables;
+
 #ifndef PN_EPS_REL
 #error "the host passes -DPN_EPS_REL"
 #endif
