@@ -15,8 +15,8 @@ typedef struct {
 inline ApertureView8 aperture_view8(float8 px, float8 py, float8 pz, PnSourceFace face,
                                     PnAperture ap, float eps_length) {
   ApertureView8 v;
-  float8 ha = ap.plane.x * px + ap.plane.y * py + ap.plane.z * pz - ap.plane.w;
-  float8 hs = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
+  float8 ha = plane_height8(ap.plane, px, py, pz);
+  float8 hs = plane_height8(face.plane, px, py, pz);
   v.use = (ha > eps_length) & (px >= ap.roomLo.x) & (px <= ap.roomHi.x) & (py >= ap.roomLo.y) &
           (py <= ap.roomHi.y) & (pz >= ap.roomLo.z) & (pz <= ap.roomHi.z);
   float8 pu = ap.axisU.x * px + ap.axisU.y * py + ap.axisU.z * pz;
@@ -56,12 +56,7 @@ inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane,
   for (int i = 0; i < 4; ++i) {
     float8 bx, by, bz;
     aperture_corner8(v, ap, plane, (i + 1) & 3, &bx, &by, &bz);
-    float8 hb = nx * bx + ny * by + nz * bz;
-    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
-    ax = bx;
-    ay = by;
-    az = bz;
-    ha = hb;
+    horizon_next8(&h, &ax, &ay, &az, &ha, bx, by, bz, nx, ny, nz);
   }
   return horizon_end8(&h, nx, ny, nz);
 }

@@ -33,16 +33,45 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * B), streamed edge by edge. A convex face leaves the horizon once (exit) and re-enters once
  * (entry); the chord exit → entry lies in the horizon plane and closes the clipped contour. */
 
+/* Where the contour of a face leaves the horizon (exit) and re-enters it (entry), per lane: the
+ * horizon chord exit → entry. */
+typedef struct {
+  float8 exit_x, exit_y, exit_z, entry_x, entry_y, entry_z;
+  int8 has_exit, has_entry;
+} HorizonChord8;
+
+inline void chord_begin8(HorizonChord8* c) {
+  c->exit_x = c->exit_y = c->exit_z = c->entry_x = c->entry_y = c->entry_z = 0.0f;
+  c->has_exit = c->has_entry = 0;
+}
+
+/* An edge from a (above the horizon in the lanes of a_in) to b (b_in), which crosses the horizon
+ * at (x, y, z) in the lanes where exactly one end is above it. */
+inline void chord_track8(HorizonChord8* c, int8 a_in, int8 b_in, float8 x, float8 y, float8 z) {
+  int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
+  c->exit_x = select(c->exit_x, x, leaves);
+  c->exit_y = select(c->exit_y, y, leaves);
+  c->exit_z = select(c->exit_z, z, leaves);
+  c->entry_x = select(c->entry_x, x, enters);
+  c->entry_y = select(c->entry_y, y, enters);
+  c->entry_z = select(c->entry_z, z, enters);
+  c->has_exit |= leaves;
+  c->has_entry |= enters;
+}
+
+/* The lanes whose horizon cuts the face: those with a chord. */
+inline int8 chord_cut8(const HorizonChord8* c) {
+  return c->has_exit & c->has_entry;
+}
+
 typedef struct {
   PnSum8 sum;
-  float8 exx, exy, exz, enx, eny, enz; /* where the contour leaves / re-enters the horizon */
-  int8 has_exit, has_entry;
+  HorizonChord8 chord;
 } HorizonSum8;
 
 inline void horizon_begin8(HorizonSum8* h) {
   h->sum.s = h->sum.c = 0.0f;
-  h->exx = h->exy = h->exz = h->enx = h->eny = h->enz = 0.0f;
-  h->has_exit = h->has_entry = 0;
+  chord_begin8(&h->chord);
 }
 
 /* One edge a → b of the face (vectors from P), ha and hb their heights above the horizon. */
@@ -55,24 +84,28 @@ inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float
       edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
                  select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
   pn_sum_add8(&h->sum, select((float8)(0.0f), term, a_in | b_in));
-  int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
-  h->exx = select(h->exx, cx, leaves);
-  h->exy = select(h->exy, cy, leaves);
-  h->exz = select(h->exz, cz, leaves);
-  h->enx = select(h->enx, cx, enters);
-  h->eny = select(h->eny, cy, enters);
-  h->enz = select(h->enz, cz, enters);
-  h->has_exit |= leaves;
-  h->has_entry |= enters;
+  chord_track8(&h->chord, a_in, b_in, cx, cy, cz);
+}
+
+/* horizon_edge8 from the current vertex a, at height ha, to b; b becomes the current vertex. */
+inline void horizon_next8(HorizonSum8* h, float8* ax, float8* ay, float8* az, float8* ha, float8 bx,
+                          float8 by, float8 bz, float8 nx, float8 ny, float8 nz) {
+  float8 hb = nx * bx + ny * by + nz * bz;
+  horizon_edge8(h, *ax, *ay, *az, *ha, bx, by, bz, hb, nx, ny, nz);
+  *ax = bx;
+  *ay = by;
+  *az = bz;
+  *ha = hb;
 }
 
 inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
-  int8 cut = h->has_exit & h->has_entry;
+  const HorizonChord8* c = &h->chord;
+  int8 cut = chord_cut8(c);
   if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
-    pn_sum_add8(
-        &h->sum,
-        select((float8)(0.0f),
-               edge_term8(h->exx, h->exy, h->exz, h->enx, h->eny, h->enz, nx, ny, nz), cut));
+    pn_sum_add8(&h->sum, select((float8)(0.0f),
+                                edge_term8(c->exit_x, c->exit_y, c->exit_z, c->entry_x, c->entry_y,
+                                           c->entry_z, nx, ny, nz),
+                                cut));
   return h->sum.s + h->sum.c;
 }
 
@@ -93,8 +126,7 @@ inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny,
     ay = by;
     az = bz;
   }
-  float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
-  return select((float8)(0.0f), sum.s + sum.c, front > 0.0f);
+  return select((float8)(0.0f), sum.s + sum.c, in_front8(face, px, py, pz));
 }
 
 inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
@@ -118,16 +150,8 @@ inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float
   float8 ha = nx * ax + ny * ay + nz * az;
   for (int i = 0; i < m; ++i) {
     q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
-    float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
-    float8 hb = nx * bx + ny * by + nz * bz;
-    horizon_edge8(&h, ax, ay, az, ha, bx, by, bz, hb, nx, ny, nz);
-    ax = bx;
-    ay = by;
-    az = bz;
-    ha = hb;
+    horizon_next8(&h, &ax, &ay, &az, &ha, q.x - px, q.y - py, q.z - pz, nx, ny, nz);
   }
   float8 sum = horizon_end8(&h, nx, ny, nz);
-  /* Only points strictly in front of the face see it. */
-  float8 front = face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w;
-  return select((float8)(0.0f), sum, front > 0.0f);
+  return select((float8)(0.0f), sum, in_front8(face, px, py, pz));
 }

@@ -25,7 +25,6 @@
 #define PN_VEC_FACES 16     /* faces of one occluder */
 #define PN_VEC_SOURCE 8     /* vertices of the face */
 #define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
-#define PN_VEC_MASKS 64     /* candidates whose shadow-test lane masks are kept for this path */
 
 /* An active occluder's edge in two parts: its side plane, which every other region's edges are
  * tested against (the hot loop of visible_edge_term8, so kept compact), and its ends. */
@@ -60,22 +59,6 @@ typedef struct {
   int na;
 } Contours8;
 
-inline void side_normal8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
-                         float8* mx, float8* my, float8* mz) {
-  float8 ex = bx - ax, ey = by - ay, ez = bz - az;
-  float8 cx = ay * ez - az * ey, cy = az * ex - ax * ez, cz = ax * ey - ay * ex;
-  float8 len = sqrt(cx * cx + cy * cy + cz * cz);
-  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
-  int8 none = len <= PN_EPS_REL * la * lb;
-  *mx = select(cx / len, (float8)(0.0f), none);
-  *my = select(cy / len, (float8)(0.0f), none);
-  *mz = select(cz / len, (float8)(0.0f), none);
-}
-
-inline float8 edge_point8(float8 a, float8 b, float8 t) {
-  return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f);
-}
-
 /* A piece end per lane where another region's side plane set it: the cross product of the two
  * unit side normals, in the order of their plane ids (crossing_point says why). */
 typedef struct {
@@ -91,29 +74,12 @@ inline void piece_end_clear8(PieceEnd8* e) {
 /* The side planes' ids in eight lanes: S' edges 0 … m − 1, the chord m, then the contour store. */
 #define PN_VEC_ID_CONTOUR (PN_VEC_SOURCE + 1)
 
-/* clip_interval_id in eight lanes, on the lanes of `clip` (returns those where the interval is not
- * empty): id0 and id1 keep, per lane, the plane (its index k) that set each end. */
-inline int8 clip_interval_id8(float8 f0, float8 f1, int8 clip, int k, float8* t0, float8* t1,
-                              int8* id0, int8* id1) {
-  int8 n0 = f0 < 0.0f, n1 = f1 < 0.0f;
-  int8 enters = clip & n0 & ~n1, leaves = clip & ~n0 & n1;
-  if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */
-    float8 t = f0 / (f0 - f1);
-    int8 up0 = enters & (t > *t0), up1 = leaves & (t < *t1);
-    *t0 = select(*t0, t, up0);
-    *t1 = select(*t1, t, up1);
-    *id0 = select(*id0, (int8)(k), up0);
-    *id1 = select(*id1, (int8)(k), up1);
-  }
-  return ~(clip & n0 & n1) & (*t1 > *t0);
-}
-
 /* Once an interval is known to matter: the crossing points at its ends (id0, id1 from
- * clip_interval_id8: the index of the plane that set each end, -1 for none), each the cross
- * product of the edge's unit side normal ms (plane id `self`) and that plane's, in the order of
- * their ids. Plane k's normal is planes[k] and its id first_id + k. Done after the clipping, for
- * the intervals that are kept, and once per distinct plane among the lanes (usually one or two)
- * rather than at every plane that moves an end. */
+ * clip_interval_id8: the index of the plane that set each end, -1 for none), each the
+ * crossing_direction8 of the edge's unit side normal ms (plane id `self`) and that plane's. Plane
+ * k's normal is planes[k] and its id first_id + k. Done after the clipping, for the intervals that
+ * are kept, and once per distinct plane among the lanes (usually one or two) rather than at every
+ * plane that moves an end. */
 inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const EdgePlane8* planes,
                            int first_id, int8 id0, int8 id1, int8 lanes, PieceEnd8* e0,
                            PieceEnd8* e1) {
@@ -126,9 +92,8 @@ inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const E
     const int id = first_id + k;
     int8 at0 = left0 & (id0 == k), at1 = left1 & (id1 == k);
     const EdgePlane8* c = &planes[k];
-    float8 px = self < id ? msx : c->mx, py = self < id ? msy : c->my, pz = self < id ? msz : c->mz;
-    float8 qx = self < id ? c->mx : msx, qy = self < id ? c->my : msy, qz = self < id ? c->mz : msz;
-    float8 dx = py * qz - pz * qy, dy = pz * qx - px * qz, dz = px * qy - py * qx;
+    float8 dx, dy, dz;
+    crossing_direction8(msx, msy, msz, self, c->mx, c->my, c->mz, id, &dx, &dy, &dz);
     e0->x = select(e0->x, dx, at0);
     e0->y = select(e0->y, dy, at0);
     e0->z = select(e0->z, dz, at0);
@@ -140,35 +105,6 @@ inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const E
     left0 &= ~at0;
     left1 &= ~at1;
   }
-}
-
-/* The point of a piece end: the crossing direction where one was set and is well defined,
- * turned to the side of the edge's own point (px, py, pz) at t; that point elsewhere. Its length
- * does not matter: piece_term8 depends on directions only, and its cross product is accurate for
- * vectors of any lengths. */
-inline void piece_point8(const PieceEnd8* e, float8* px, float8* py, float8* pz) {
-  int8 use = e->set & (e->x * e->x + e->y * e->y + e->z * e->z > PN_EPS_REL * PN_EPS_REL);
-  if (!pn_any(use)) return;
-  float8 sign =
-      select((float8)(1.0f), (float8)(-1.0f), e->x * *px + e->y * *py + e->z * *pz < 0.0f);
-  *px = select(*px, sign * e->x, use);
-  *py = select(*py, sign * e->y, use);
-  *pz = select(*pz, sign * e->z, use);
-}
-
-inline float8 diff_of_products8(float8 x, float8 y, float8 z, float8 w) {
-  float8 zw = z * w;
-  return fma(x, y, -zw) + fma(-z, w, zw);
-}
-
-/* piece_term in eight lanes. */
-inline float8 piece_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
-                          float8 nx, float8 ny, float8 nz) {
-  float8 cx = diff_of_products8(ay, bz, az, by), cy = diff_of_products8(az, bx, ax, bz),
-         cz = diff_of_products8(ax, by, ay, bx);
-  float8 s = sqrt(cx * cx + cy * cy + cz * cz);
-  float8 term = -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s;
-  return select(term, (float8)(0.0f), s <= 0.0f);
 }
 
 /* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
@@ -235,10 +171,9 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       if (!pn_any(use)) continue;
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
       float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
-      int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
-      if (owner < v) /* same visible side: this edge is the one kept */
-        covers &= ~(inplane & ((mex * e->mx + mey * e->my + mez * e->mz) > 0.0f));
-      covers &= clip_interval_id8(f0, f1, use & ~inplane, k, &t0, &t1, &id0, &id1);
+      int8 tied = use & in_plane8(f0, f1, la, lb);
+      covers &= ~keeps_tied_edge8(tied, mex, mey, mez, e->mx, e->my, e->mz, owner, v);
+      covers &= clip_interval_id8(f0, f1, use & ~tied, k, &t0, &t1, &id0, &id1);
     }
     if (!pn_any(covers)) continue;
     crossing_ends8(msx, msy, msz, self, cs->p, PN_VEC_ID_CONTOUR, id0, id1, covers, &e0[nc],
@@ -271,7 +206,8 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
            p0z = edge_point8(az, bz, st);
     float8 p1x = edge_point8(ax, bx, end), p1y = edge_point8(ay, by, end),
            p1z = edge_point8(az, bz, end);
-    piece_point8(j < 0 ? lo_end : &e1[j], &p0x, &p0y, &p0z);
+    const PieceEnd8* start_end = j < 0 ? lo_end : &e1[j];
+    turn_to_point8(start_end->x, start_end->y, start_end->z, start_end->set, &p0x, &p0y, &p0z);
     PieceEnd8 end_end = *hi_end;
     for (int w = 0; w < nc; ++w) {
       int8 at = valid & (end_at == w);
@@ -281,7 +217,7 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       end_end.z = select(end_end.z, e0[w].z, at);
       end_end.set = select(end_end.set, e0[w].set, at);
     }
-    piece_point8(&end_end, &p1x, &p1y, &p1z);
+    turn_to_point8(end_end.x, end_end.y, end_end.z, end_end.set, &p1x, &p1y, &p1z);
     float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }

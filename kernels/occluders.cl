@@ -9,26 +9,42 @@
 
 #include "aperture.cl"
 
-inline bool occluder_separated(float3 p, PnOccluder o, const PnSceneTables* tables,
-                               float eps_length) {
-  for (int j = 0; j < o.separatingCount; ++j) {
-    float4 pl = tables->planes[o.firstSeparating + j];
-    if (dot(pl.xyz, p) - pl.w >= -eps_length) return true;
+/* The plane tests of an occluder, written once for one point (T float, names ending in 1) and
+ * eight lanes (float8, 8), M the mask type; each narrows `lanes` (or, face_sees, tests face j):
+ *  - face_sees: face j of the occluder sees P (P in front of it by more than eps_length);
+ *  - not_separated: no separating plane has P in its closed outside (within eps_length);
+ *  - in_penumbra_volume: P inside the penumbra volume grown by eps_length, where the occluder
+ *    may shade it;
+ *  - in_umbra_volume: P deeper than eps_length inside the umbra volume, where the occluder hides
+ *    the whole face (no lane where it claims no umbra).
+ * Both volumes err on the safe side: the penumbra path decides. */
+#define PN_DEFINE_OCCLUDER_TESTS(T, M, S)                                                        \
+  inline M face_sees##S(PnOccluder o, int j, const PnSceneTables* tables, T px, T py, T pz,      \
+                        float eps_length) {                                                      \
+    return plane_height##S(tables->planes[o.firstPlane + j], px, py, pz) > eps_length;           \
+  }                                                                                              \
+  inline M not_separated##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,         \
+                            float eps_length, M lanes) {                                         \
+    for (int j = 0; j < o.separatingCount && pn_any(lanes); ++j)                                 \
+      lanes &= plane_height##S(tables->planes[o.firstSeparating + j], px, py, pz) < -eps_length; \
+    return lanes;                                                                                \
+  }                                                                                              \
+  inline M in_penumbra_volume##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,    \
+                                 float eps_length, M lanes) {                                    \
+    for (int j = 0; j < o.penumbraCount && pn_any(lanes); ++j)                                   \
+      lanes &= plane_height##S(tables->planes[o.firstPenumbra + j], px, py, pz) <= eps_length;   \
+    return lanes;                                                                                \
+  }                                                                                              \
+  inline M in_umbra_volume##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,       \
+                              float eps_length, M lanes) {                                       \
+    if (o.umbraCount == 0) return (M)(0);                                                        \
+    for (int j = 0; j < o.umbraCount && pn_any(lanes); ++j)                                      \
+      lanes &= plane_height##S(tables->planes[o.firstUmbra + j], px, py, pz) < -eps_length;      \
+    return lanes;                                                                                \
   }
-  return false;
-}
-
-/* The shadow volumes of an occluder for this face (host/shadow/shadow_volume.hpp): inside the
- * penumbra volume grown by eps the occluder may shade P; deeper than eps inside the umbra
- * volume it hides the whole face. Both err on the safe side (the exact path decides). */
-inline bool in_penumbra_volume(float3 p, PnOccluder o, const PnSceneTables* tables,
-                               float eps_length) {
-  for (int j = 0; j < o.penumbraCount; ++j) {
-    float4 pl = tables->planes[o.firstPenumbra + j];
-    if (dot(pl.xyz, p) - pl.w > eps_length) return false;
-  }
-  return true;
-}
+PN_DEFINE_OCCLUDER_TESTS(float, int, 1)
+PN_DEFINE_OCCLUDER_TESTS(float8, int8, 8)
+#undef PN_DEFINE_OCCLUDER_TESTS
 
 /* The occluders a patch considers for one face: its candidate list, or (count < 0, the plain
  * path) every occluder of the face. */
@@ -44,6 +60,8 @@ inline int occluder_index(int i, PnPatchFace pf, PnSourceFace face, const PnScen
  * (grown by eps) takes the penumbra path; the rest keep the unoccluded value. Without (the plain
  * path): a lane takes the penumbra path unless every occluder is its own solid or separated from
  * the face. */
+
+#define PN_VEC_MASKS 64 /* candidates whose shadow-test lane masks are kept for the lane path */
 
 typedef struct {
   int8 umbra;  /* some occluder hides the whole face */
@@ -64,10 +82,7 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
     if (o.behindAperture) inside &= ~aperture; /* lanes that see the face through A */
     if (culling) {
       if (i < PN_VEC_MASKS) inside_out[i] = 0;
-      for (int j = 0; j < o.penumbraCount && pn_any(inside); ++j) {
-        float4 pl = tables->planes[o.firstPenumbra + j];
-        inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
-      }
+      inside = in_penumbra_volume8(o, tables, px, py, pz, eps_length, inside);
       if (!pn_any(inside)) continue;
       /* The volume is the occluder's against the whole face; lanes that see only a rectangle of
        * it through an aperture drop the occluder when it misses the pyramid to that rectangle. */
@@ -78,19 +93,9 @@ ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFac
       }
       if (i < PN_VEC_MASKS) inside_out[i] = inside;
       tests.shaded |= inside;
-      if (o.umbraCount == 0) continue;
-      int8 hidden = inside;
-      for (int j = 0; j < o.umbraCount && pn_any(hidden); ++j) {
-        float4 pl = tables->planes[o.firstUmbra + j];
-        hidden &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
-      }
-      tests.umbra |= hidden;
+      tests.umbra |= in_umbra_volume8(o, tables, px, py, pz, eps_length, inside);
     } else {
-      for (int j = 0; j < o.separatingCount; ++j) {
-        float4 pl = tables->planes[o.firstSeparating + j];
-        inside &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
-      }
-      tests.shaded |= inside;
+      tests.shaded |= not_separated8(o, tables, px, py, pz, eps_length, inside);
     }
   }
   tests.shaded &= ~tests.umbra;

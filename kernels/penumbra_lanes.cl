@@ -38,14 +38,12 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
   float8 rise = 0.0f;
   for (int i = 0; i < m; ++i)
     rise = fmax(rise, sh[i] / sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]));
-  int8 lanes = asked &
-               (face.plane.x * px + face.plane.y * py + face.plane.z * pz - face.plane.w > 0.0f) &
-               (rise > PN_EPS_REL);
+  int8 lanes = asked & in_front8(face, px, py, pz) & (rise > PN_EPS_REL);
   if (!pn_any(lanes)) return 0.0f;
   /* Side planes of S': the face's edges, and the horizon where it cuts the face. */
   float8 smx[PN_VEC_SOURCE], smy[PN_VEC_SOURCE], smz[PN_VEC_SOURCE];
-  float8 hx0 = 0.0f, hy0 = 0.0f, hz0 = 0.0f, hx1 = 0.0f, hy1 = 0.0f, hz1 = 0.0f; /* the chord */
-  int8 has_exit = 0, has_entry = 0;
+  HorizonChord8 chord;
+  chord_begin8(&chord);
   for (int i = 0; i < m; ++i) {
     int j = i + 1 == m ? 0 : i + 1;
     side_normal8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], &smx[i], &smy[i], &smz[i]);
@@ -53,19 +51,13 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     float8 t = sh[i] / (sh[i] - sh[j]);
     float8 cx = edge_point8(sx[i], sx[j], t), cy = edge_point8(sy[i], sy[j], t),
            cz = edge_point8(sz[i], sz[j], t);
-    int8 leaves = a_in & ~b_in, enters = ~a_in & b_in;
-    hx0 = select(hx0, cx, leaves);
-    hy0 = select(hy0, cy, leaves);
-    hz0 = select(hz0, cz, leaves);
-    hx1 = select(hx1, cx, enters);
-    hy1 = select(hy1, cy, enters);
-    hz1 = select(hz1, cz, enters);
-    has_exit |= leaves;
-    has_entry |= enters;
+    chord_track8(&chord, a_in, b_in, cx, cy, cz);
   }
-  int8 cut = has_exit & has_entry;
+  int8 cut = chord_cut8(&chord);
   float8 cmx = 0.0f, cmy = 0.0f, cmz = 0.0f; /* the chord's side normal */
-  if (pn_any(cut)) side_normal8(hx0, hy0, hz0, hx1, hy1, hz1, &cmx, &cmy, &cmz);
+  if (pn_any(cut))
+    side_normal8(chord.exit_x, chord.exit_y, chord.exit_z, chord.entry_x, chord.entry_y,
+                 chord.entry_z, &cmx, &cmy, &cmz);
   EdgePlane8 sides[PN_VEC_SOURCE + 1]; /* S' side planes by id, for crossing_ends8 */
   for (int i = 0; i < m; ++i) {
     sides[i].mx = smx[i];
@@ -91,15 +83,9 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     if (i >= PN_VEC_MASKS) {
       act &= own != (int8)(o.solid);
       if (o.behindAperture) act &= ~view.use;
-      for (int j = 0; j < o.penumbraCount && pn_any(act); ++j) {
-        float4 pl = tables->planes[o.firstPenumbra + j];
-        act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) <= eps_length;
-      }
+      act = in_penumbra_volume8(o, tables, px, py, pz, eps_length, act);
     }
-    for (int j = 0; j < o.separatingCount && pn_any(act); ++j) {
-      float4 pl = tables->planes[o.firstSeparating + j];
-      act &= (pl.x * px + pl.y * py + pl.z * pz - pl.w) < -eps_length;
-    }
+    act = not_separated8(o, tables, px, py, pz, eps_length, act);
     if (!pn_any(act)) continue;
     /* The bounding sphere against the pyramid P + cone(S'). */
     float8 cx = o.bound.x - px, cy = o.bound.y - py, cz = o.bound.z - pz;
@@ -121,8 +107,7 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     int8 front[PN_VEC_FACES];
     int8 any_front = 0;
     for (int j = 0; j < o.planeCount; ++j) {
-      float4 pl = tables->planes[o.firstPlane + j];
-      front[j] = (pl.x * px + pl.y * py + pl.z * pz - pl.w) > eps_length;
+      front[j] = face_sees8(o, j, tables, px, py, pz, eps_length);
       any_front |= front[j];
     }
     *scalar |= act & ~any_front; /* P lies on this solid: the scalar path clips S' by it */
@@ -230,8 +215,9 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
     visible_edge_term8(sx[i], sy[i], sz[i], sx[j], sy[j], sz[j], smx[i], smy[i], smz[i], i, lo, hi,
                        &none, &none, lanes & (a_in | b_in), -1, nx, ny, nz, &cs, &sum);
   }
-  visible_edge_term8(hx0, hy0, hz0, hx1, hy1, hz1, cmx, cmy, cmz, m, (float8)(0.0f), (float8)(1.0f),
-                     &none, &none, lanes & cut, -1, nx, ny, nz, &cs, &sum);
+  visible_edge_term8(chord.exit_x, chord.exit_y, chord.exit_z, chord.entry_x, chord.entry_y,
+                     chord.entry_z, cmx, cmy, cmz, m, (float8)(0.0f), (float8)(1.0f), &none, &none,
+                     lanes & cut, -1, nx, ny, nz, &cs, &sum);
   /* (b) The occluders' contour edges inside S', as holes. */
   for (int u = 0; u < cs.na; ++u)
     for (int k = cs.first[u]; k < cs.first[u + 1]; ++k) {
@@ -251,9 +237,9 @@ float8 penumbra_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, flo
         float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
         float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
         /* In a side plane of S': the source keeps it, or the visible region is empty there. */
-        int8 inplane = use & (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb);
-        on &= ~inplane;
-        on &= clip_interval_id8(f0, f1, use & ~inplane, i, &t0, &t1, &id0, &id1);
+        int8 tied = use & in_plane8(f0, f1, la, lb);
+        on &= ~tied;
+        on &= clip_interval_id8(f0, f1, use & ~tied, i, &t0, &t1, &id0, &id1);
       }
       if (!pn_any(on)) continue;
       PieceEnd8 lo_end, hi_end;

@@ -60,7 +60,7 @@ int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
   float most = 2.0f;
   for (int j = 0; j < o.planeCount; ++j) {
     float4 pl = tables->planes[o.firstPlane + j];
-    if (dot(pl.xyz, p) - pl.w < -eps_length) continue; /* this face does not pass through P */
+    if (plane_height1(pl, p.x, p.y, p.z) < -eps_length) continue; /* not through P */
     if (count < 0) count = 0;
     bool holds_source = true;
     for (int i = 0; i < st->ns && holds_source; ++i)
@@ -135,19 +135,18 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
   lo[0] = 0.0f;
   hi[0] = 1.0f;
   lo_id[0] = hi_id[0] = PN_ID_VERTEX;
-  const float la = length(a), lb = length(b);
+  const float la = sqrt(pn_dot(a, a)), lb = sqrt(pn_dot(b, b));
 
   if (owner >= 0) { /* an occluder edge counts only inside S' */
     float t0 = 0.0f, t1 = 1.0f;
     for (int i = 0; i < st->ns; ++i) {
       float3 m = st->sm[i];
       if (no_plane(m)) continue; /* repeated S' vertex: no side plane */
-      float f0 = -dot(m, a), f1 = -dot(m, b);
+      float f0 = -pn_dot(m, a), f1 = -pn_dot(m, b);
       /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
        * opposite → dropped. Either way this occluder edge is not counted. */
-      if (in_plane(f0, f1, la, lb)) return;
-      clip_interval_id(f0, f1, i, &t0, &t1, &lo_id[0], &hi_id[0]);
-      if (!(t1 > t0)) return;
+      if (in_plane1(f0, f1, la, lb)) return;
+      if (!clip_interval_id1(f0, f1, 1, i, &t0, &t1, &lo_id[0], &hi_id[0])) return;
     }
     lo[0] = t0;
     hi[0] = t1;
@@ -161,14 +160,13 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
     for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
       float3 m = st->cm[e];      /* inside the occluder's cone: m·x > 0 */
       if (no_plane(m)) continue; /* P on the edge's line */
-      float f0 = dot(m, a), f1 = dot(m, b);
-      if (in_plane(f0, f1, la, lb)) {
-        bool same_side = dot(m_self, m) > 0.0f;
-        if (same_side && owner < v) covers = false; /* this edge is the one kept */
-        continue;                                   /* otherwise the plane does not limit */
+      float f0 = pn_dot(m, a), f1 = pn_dot(m, b);
+      if (in_plane1(f0, f1, la, lb)) {
+        if (keeps_tied_edge1(1, m_self.x, m_self.y, m_self.z, m.x, m.y, m.z, owner, v))
+          covers = false;
+        continue;
       }
-      clip_interval_id(f0, f1, PN_ID_CONTOUR + e, &t0, &t1, &id0, &id1);
-      if (!(t1 > t0)) covers = false;
+      if (!clip_interval_id1(f0, f1, 1, PN_ID_CONTOUR + e, &t0, &t1, &id0, &id1)) covers = false;
     }
     if (!covers) continue;
     /* Subtract [t0, t1] from the sorted, disjoint visible pieces. */
@@ -268,7 +266,7 @@ float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX
 float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
                     const PnSceneTables* tables, float eps_length, bool aperture,
                     const float3* corners, int* error) {
-  if (dot(face.plane.xyz, p) - face.plane.w <= 0.0f) return 0.0f;
+  if (!in_front1(face, p.x, p.y, p.z)) return 0.0f;
   PenumbraState st;
 
   /* S': the face (or its visible rectangle) clipped by the horizon plane through P
@@ -316,11 +314,11 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
   for (int i = 0; i < count; ++i) {
     PnOccluder o = tables->occluders[occluder_index(i, pf, face, tables)];
     if (aperture && o.behindAperture) continue;
-    if (o.solid == own || occluder_separated(p, o, tables, eps_length)) continue;
-    if (culling && !in_penumbra_volume(p, o, tables, eps_length)) continue;
+    if (o.solid == own || !not_separated1(o, tables, p.x, p.y, p.z, eps_length, 1)) continue;
+    if (culling && !in_penumbra_volume1(o, tables, p.x, p.y, p.z, eps_length, 1)) continue;
     bool any_front = false;
     for (int j = 0; j < o.planeCount && !any_front; ++j)
-      any_front = faces_point(o, j, p, tables, eps_length);
+      any_front = face_sees1(o, j, tables, p.x, p.y, p.z, eps_length);
     if (!any_front) {
       if (contacts == PN_MAX_CONTACTS) {
         *error |= PN_ERROR_TOO_MANY_CONTACTS;

@@ -24,9 +24,13 @@ typedef struct {
 #error "the host passes -DPN_EPS_REL"
 #endif
 
-/* Whether any lane of a mask (lanes all ones or all zeros, as comparisons give) is set. PoCL's
+/* Whether any lane of a mask is set: a comparison's result for one point (int: 0 or 1) or for
+ * eight lanes (int8: 0 or -1 each), so that code written once for both types can test it. PoCL's
  * any() extracts the eight lanes one by one; a vector OR-reduction compiles to one vptest. */
-inline bool pn_any(int8 m) {
+inline bool __attribute__((overloadable)) pn_any(int m) {
+  return m != 0;
+}
+inline bool __attribute__((overloadable)) pn_any(int8 m) {
   return __builtin_reduce_or(m) != 0;
 }
 
@@ -36,8 +40,8 @@ inline bool pn_any(int8 m) {
  * error. TwoSum, not Kahan, because a term may be larger than the sum so far. Safe as written:
  * OpenCL C reassociates nothing unless built with -cl-unsafe-math-optimizations (the host does
  * not), and there is no product here to contract into an fma. Every sum of terms and of faces
- * uses it (culling_test: the default and plain paths went from 1.25e-6 to 8.8e-7 of
- * E_unoccluded apart on the open office, for 1.6 % more kernel instructions). */
+ * uses it, for about 1.6 % more kernel instructions: the rounding of the sums is then well below
+ * the 1e-6 of E_unoccluded that culling_test holds the default and plain paths to. */
 #define PN_DEFINE_SUM(T, Sum, add)        \
   typedef struct {                        \
     T s, c;                               \
@@ -50,3 +54,24 @@ inline bool pn_any(int8 m) {
 PN_DEFINE_SUM(float, PnSum, pn_sum_add)    /* one body for the scalar path */
 PN_DEFINE_SUM(float8, PnSum8, pn_sum_add8) /* and for eight lanes */
 #undef PN_DEFINE_SUM
+
+/* The height of a point above a plane (xyz its unit normal, w its offset), positive on the side
+ * the normal points to, and the front test of a source face: only points strictly in front of a
+ * face see it. Written once for one point (T float, names ending in 1) and eight lanes (float8,
+ * 8), M the mask type: where both paths test a plane they read the same bits. */
+#define PN_DEFINE_PLANE_TESTS(T, M, S)                        \
+  inline T plane_height##S(float4 pl, T px, T py, T pz) {     \
+    return pl.x * px + pl.y * py + pl.z * pz - pl.w;          \
+  }                                                           \
+  inline M in_front##S(PnSourceFace face, T px, T py, T pz) { \
+    return plane_height##S(face.plane, px, py, pz) > 0.0f;    \
+  }
+PN_DEFINE_PLANE_TESTS(float, int, 1)
+PN_DEFINE_PLANE_TESTS(float8, int8, 8)
+#undef PN_DEFINE_PLANE_TESTS
+
+/* a·b written out as the eight-lane code writes its dot products (contracted into fma the same
+ * way; dot() rounds differently), for the scalar tests that must read what the lane tests read. */
+inline float pn_dot(float3 a, float3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
