@@ -1,6 +1,7 @@
-/* Structs that cross the host/kernel boundary, declared once (DESIGN.md, "Rules of the house").
- * Plain C with explicit 16-byte-aligned layout; the host static_asserts the sizes. Included by
- * the host (C++) and pasted in front of every kernel source by cmake/EmbedKernels.cmake. */
+/* Structs that cross the host/kernel boundary, declared once (docs/architecture.md). Plain C with
+ * explicit 16-byte-aligned layout; the host static_asserts the sizes. Included by the host (C++)
+ * and by kernel files by name (`#include "shared_types.h"`, resolved by cmake/EmbedKernels.cmake).
+ */
 #ifndef PENUMBRA_SHARED_TYPES_H
 #define PENUMBRA_SHARED_TYPES_H
 
@@ -85,12 +86,29 @@ typedef struct {
   pn_int facingLanes; /* PN_CLASS_UMBRA: bit l set when lane l faces the source (class Umbra) */
 } PnPatchFace;
 
-#define PN_CLASS_A 0     /* every point of the patch sees the whole face above its horizon */
-#define PN_CLASS_B 1     /* some point's horizon may cut the face */
+/* The patch classes the host's patch table writes. Nishita's class A (every point sees the whole
+ * face above its horizon) has no value: whether a horizon cuts the face the kernel tests itself,
+ * in float, the way it clips (horizon_cuts8), so such patches are class B too. */
+#define PN_CLASS_B 1     /* some point may receive light from the face */
 #define PN_CLASS_C 2     /* no point of the patch receives anything from the face */
 #define PN_CLASS_UMBRA 3 /* every point of the patch is in one occluder's umbra: E = 0 */
-/* The host's patch table writes B, C or UMBRA: whether a horizon cuts the face the kernel tests
- * itself, in float, the way it clips (horizon_cuts8). */
+
+/* The scalar launch parameters of the illuminance kernel (kernels/illuminance.cl), passed by
+ * value: OpenCL C 1.2 takes a struct kernel argument only when it holds no pointer, so the
+ * buffers are arguments of their own (lighting/kernel_scene.hpp binds both in one place). */
+typedef struct {
+  pn_int faceCount;    /* source faces in the faces table */
+  float epsLength;     /* the kernel's absolute length tolerance (m) */
+  pn_int paths;        /* PN_PATH_* bits; none: the plain path */
+  pn_int bySource;     /* 1: E per source, [source][padded point]; 0: E summed per point */
+  pn_int sourceStride; /* the padded point count: the row length of per-source outputs */
+  pn_int pad1, pad2, pad3;
+} PnLaunchParams;
+
+/* The paths of a launch. Without PN_PATH_CULLING, the plain path: every occluder at every
+ * point, separating planes, the scalar penumbra path. */
+#define PN_PATH_CULLING 1 /* face classes, candidates, shadow volumes, apertures */
+#define PN_PATH_LANES 2   /* with culling: shaded lanes take the eight-lane penumbra path */
 
 /* Something a camera ray can hit (kernels/visibility.cl). A solid is the intersection of its
  * planes' closed insides (n·x <= w), plane i being face i, whose face id is firstFaceId + i. A

@@ -1,3 +1,5 @@
+#include "shared_types.h"
+
 /* Primary visibility (Nishita §2.2 step ii, done per sample rather than by scanline polygon
  * sorting): for every sample of the image, the nearest face a ray from the eye meets.
  *

@@ -125,6 +125,27 @@ KernelLaunch& KernelLaunch::arg(unsigned index, const std::array<float, 4>& valu
   return *this;
 }
 
+KernelLaunch& KernelLaunch::arg(unsigned index, const void* value, std::size_t bytes) {
+  impl_->kernel.setArg(index, bytes, value);
+  return *this;
+}
+
+std::vector<std::string> KernelLaunch::argumentNames() const {
+  try {
+    const cl_uint count = impl_->kernel.getInfo<CL_KERNEL_NUM_ARGS>();
+    std::vector<std::string> names;
+    for (cl_uint i = 0; i < count; ++i) {
+      // c_str(): a terminating NUL, where the C++ wrapper keeps one, is not part of the name.
+      const std::string name = impl_->kernel.getArgInfo<CL_KERNEL_ARG_NAME>(i);
+      names.emplace_back(name.c_str());
+    }
+    return names;
+  } catch (const cl::Error& error) {
+    throw std::runtime_error(
+        fmt::format("reading the arguments of kernel {}: {}", impl_->name, describe(error)));
+  }
+}
+
 void KernelLaunch::run(std::size_t globalSize, std::size_t localSize) {
   if (globalSize == 0) return;
   try {

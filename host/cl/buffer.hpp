@@ -5,6 +5,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "cl/device.hpp"
 
@@ -58,6 +59,11 @@ class KernelLaunch {
   KernelLaunch& arg(unsigned index, int value);
   KernelLaunch& arg(unsigned index, float value);
   KernelLaunch& arg(unsigned index, const std::array<float, 4>& value);  // a float4
+  // A struct of `bytes` bytes passed by value: a kernel argument whose type is a struct declared
+  // in kernels/shared_types.h (the host's copy of the same declaration).
+  KernelLaunch& arg(unsigned index, const void* value, std::size_t bytes);
+  // The kernel's argument names, in order. The program must be built with -cl-kernel-arg-info.
+  std::vector<std::string> argumentNames() const;
   // Enqueues over `globalSize` work-items in work-groups of `localSize` (globalSize must be a
   // multiple of it) and waits for completion. A fixed work-group size matters on PoCL, which
   // compiles a specialised kernel for every new (global, local) shape it is handed: letting it

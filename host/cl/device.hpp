@@ -1,5 +1,5 @@
 #pragma once
-// The only OpenCL-facing API the rest of penumbra sees (DESIGN.md: only host/cl includes
+// The only OpenCL-facing API the rest of penumbra sees (docs/architecture.md: only host/cl includes
 // <CL/opencl.hpp>). Implementation details live behind a pimpl.
 #include <cstddef>
 #include <memory>

@@ -1,6 +1,7 @@
 #pragma once
-// The one place <CL/opencl.hpp> is included (DESIGN.md). Version macros come from CMake
-// (CL_HPP_TARGET_OPENCL_VERSION=300, CL_HPP_MINIMUM_OPENCL_VERSION=200: STACK.md pitfall 1).
+// The one place <CL/opencl.hpp> is included (docs/architecture.md). Version macros come from
+// CMake (CL_HPP_TARGET_OPENCL_VERSION=300, CL_HPP_MINIMUM_OPENCL_VERSION=200), the same for
+// every file that includes the wrapper: without them it warns and picks its own defaults.
 #define CL_HPP_ENABLE_EXCEPTIONS
 #include <CL/opencl.hpp>
 

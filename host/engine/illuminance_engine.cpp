@@ -36,10 +36,7 @@ struct IlluminanceEngine::State {
   std::size_t sceneBytes = 0;  // what the buffers above take on the device
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
-      : device(&d),
-        options(o),
-        program(d, "illuminance",
-                fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f", Tolerance::kKernelRelative)) {
+      : device(&d), options(o), program(d, "illuminance", illuminanceBuildOptions()) {
     upload(scene);
   }
 
@@ -146,7 +143,7 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
 }  // namespace
 
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
-  // The plain path (the foundation's) takes the points as given: its work per point does not
+  // The plain path takes the points as given: its work per point does not
   // depend on the point's neighbours.
   if (!state_->options.culling || points.size() <= PN_LANES)
     return evaluateInOrder(points, bySource);
@@ -242,29 +239,35 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
   DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
   DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
 
+  PnLaunchParams params{};
+  params.faceCount = static_cast<cl_int>(state_->packed.faces.size());
+  params.epsLength = state_->packed.epsLength;
+  params.paths = state_->options.culling ? PN_PATH_CULLING : 0;
+  if (state_->options.culling && state_->options.vectorPenumbra) params.paths |= PN_PATH_LANES;
+  params.bySource = bySource ? 1 : 0;
+  params.sourceStride = static_cast<cl_int>(padded);
+  IlluminanceBuffers buffers;
+  buffers.pointX = &pointBuffers[0];
+  buffers.pointY = &pointBuffers[1];
+  buffers.pointZ = &pointBuffers[2];
+  buffers.normalX = &pointBuffers[3];
+  buffers.normalY = &pointBuffers[4];
+  buffers.normalZ = &pointBuffers[5];
+  buffers.pointSolid = &ownBuffer;
+  buffers.faces = &state_->faces;
+  buffers.sourceVertices = &state_->sourceVertices;
+  buffers.occluders = &state_->occluders;
+  buffers.planes = &state_->planes;
+  buffers.edges = &state_->edges;
+  buffers.occluderVertices = &state_->occluderVertices;
+  buffers.apertures = &state_->apertures;
+  buffers.patchFaces = &patchBuffer;
+  buffers.candidates = &candidateBuffer;
+  buffers.illuminance = &out;
+  buffers.errors = &errors;
+  buffers.classes = &classes;
   compute::KernelLaunch launch(state_->program, "illuminance");
-  // Argument order: kernels/illuminance.cl, kernel `illuminance`.
-  unsigned a = 0;
-  for (int k = 0; k < 6; ++k) launch.arg(a++, pointBuffers[k]);
-  launch.arg(a++, ownBuffer);
-  launch.arg(a++, state_->faces);
-  launch.arg(a++, static_cast<int>(state_->packed.faces.size()));
-  launch.arg(a++, state_->sourceVertices);
-  launch.arg(a++, state_->occluders);
-  launch.arg(a++, state_->planes);
-  launch.arg(a++, state_->edges);
-  launch.arg(a++, state_->occluderVertices);
-  launch.arg(a++, state_->packed.epsLength);
-  launch.arg(a++, patchBuffer);
-  launch.arg(a++, candidateBuffer);
-  launch.arg(a++, state_->apertures);
-  // use_volumes: bit 0 culling, bit 1 the eight-lane penumbra path.
-  launch.arg(a++, state_->options.culling ? (state_->options.vectorPenumbra ? 3 : 1) : 0);
-  launch.arg(a++, bySource ? 1 : 0);
-  launch.arg(a++, out);
-  launch.arg(a++, errors);
-  launch.arg(a++, classes);
-  launch.arg(a++, static_cast<int>(padded));
+  bindIlluminanceArguments(launch, params, buffers);
   launch.run(workItems, kWorkGroup);
 
   std::vector<float> e(outValues);

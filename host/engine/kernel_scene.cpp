@@ -13,6 +13,8 @@ static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernel
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
 static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
 static_assert(sizeof(PnPatchFace) == 16, "PnPatchFace layout must match kernels/shared_types.h");
+static_assert(sizeof(PnLaunchParams) == 32,
+              "PnLaunchParams layout must match kernels/shared_types.h");
 
 namespace penumbra {
 
@@ -120,7 +122,60 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
   packed.occluders.push_back(o);
 }
 
+// The kernel's __global arguments after `params`, in its order: the name it gives each and the
+// IlluminanceBuffers field bound to it. The one list of the binding (bindIlluminanceArguments and
+// illuminanceArgumentNames read it).
+struct BufferArgument {
+  const char* name;
+  const compute::DeviceBuffer* IlluminanceBuffers::*buffer;
+};
+constexpr BufferArgument kBufferArguments[] = {
+    {"point_x", &IlluminanceBuffers::pointX},
+    {"point_y", &IlluminanceBuffers::pointY},
+    {"point_z", &IlluminanceBuffers::pointZ},
+    {"normal_x", &IlluminanceBuffers::normalX},
+    {"normal_y", &IlluminanceBuffers::normalY},
+    {"normal_z", &IlluminanceBuffers::normalZ},
+    {"point_solid", &IlluminanceBuffers::pointSolid},
+    {"faces", &IlluminanceBuffers::faces},
+    {"source_vertices", &IlluminanceBuffers::sourceVertices},
+    {"occluders", &IlluminanceBuffers::occluders},
+    {"planes", &IlluminanceBuffers::planes},
+    {"edges", &IlluminanceBuffers::edges},
+    {"occluder_vertices", &IlluminanceBuffers::occluderVertices},
+    {"apertures", &IlluminanceBuffers::apertures},
+    {"patch_faces", &IlluminanceBuffers::patchFaces},
+    {"candidates", &IlluminanceBuffers::candidates},
+    {"illuminance_lx", &IlluminanceBuffers::illuminance},
+    {"errors", &IlluminanceBuffers::errors},
+    {"classes", &IlluminanceBuffers::classes},
+};
+constexpr const char* kParamsArgument = "params";
+
 }  // namespace
+
+std::string illuminanceBuildOptions() {
+  return fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f", Tolerance::kKernelRelative);
+}
+
+std::vector<std::string> illuminanceArgumentNames() {
+  std::vector<std::string> names = {kParamsArgument};
+  for (const BufferArgument& argument : kBufferArguments) names.emplace_back(argument.name);
+  return names;
+}
+
+void bindIlluminanceArguments(compute::KernelLaunch& launch, const PnLaunchParams& params,
+                              const IlluminanceBuffers& buffers) {
+  unsigned index = 0;
+  launch.arg(index++, &params, sizeof params);
+  for (const BufferArgument& argument : kBufferArguments) {
+    const compute::DeviceBuffer* buffer = buffers.*argument.buffer;
+    if (buffer == nullptr)
+      throw std::logic_error(
+          fmt::format("the illuminance kernel's argument {} has no buffer", argument.name));
+    launch.arg(index++, *buffer);
+  }
+}
 
 KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
   KernelScene packed;

@@ -1,8 +1,10 @@
 #pragma once
 // The scene as the illuminance kernel reads it: flat arrays of the structs in
 // kernels/shared_types.h. Built once on the host in double precision, stored as float.
+#include <string>
 #include <vector>
 
+#include "cl/buffer.hpp"
 #include "geometry/tolerance.hpp"
 #include "kernels/shared_types.h"
 #include "shadow/scene_shadows.hpp"
@@ -33,5 +35,43 @@ struct KernelScene {
 // centre of scene.bounds(). Throws std::runtime_error when a face or solid exceeds the kernel's
 // limits (shared_types.h).
 KernelScene packScene(const Scene& scene, const SceneShadows& shadows);
+
+// The build options of the illuminance program (kernels/illuminance.cl): OpenCL C 1.2 and the
+// kernel's relative tolerance, Tolerance::kKernelRelative.
+std::string illuminanceBuildOptions();
+
+// The buffers of the kernel `illuminance`, one field per __global argument, in its order. Points
+// are structure-of-arrays, padded to whole work-items; the scene's tables come from a
+// KernelScene, the patch table from buildPatchTable; the last three are written.
+struct IlluminanceBuffers {
+  const compute::DeviceBuffer* pointX = nullptr;
+  const compute::DeviceBuffer* pointY = nullptr;
+  const compute::DeviceBuffer* pointZ = nullptr;
+  const compute::DeviceBuffer* normalX = nullptr;
+  const compute::DeviceBuffer* normalY = nullptr;
+  const compute::DeviceBuffer* normalZ = nullptr;
+  const compute::DeviceBuffer* pointSolid = nullptr;
+  const compute::DeviceBuffer* faces = nullptr;
+  const compute::DeviceBuffer* sourceVertices = nullptr;
+  const compute::DeviceBuffer* occluders = nullptr;
+  const compute::DeviceBuffer* planes = nullptr;
+  const compute::DeviceBuffer* edges = nullptr;
+  const compute::DeviceBuffer* occluderVertices = nullptr;
+  const compute::DeviceBuffer* apertures = nullptr;
+  const compute::DeviceBuffer* patchFaces = nullptr;
+  const compute::DeviceBuffer* candidates = nullptr;
+  const compute::DeviceBuffer* illuminance = nullptr;  // lx: per point, or [source][point]
+  const compute::DeviceBuffer* errors = nullptr;       // PN_ERROR_* bits per work-item
+  const compute::DeviceBuffer* classes = nullptr;      // ShadowClass, [source][point]
+};
+
+// The kernel's argument names as kernels/illuminance.cl spells them, in the order
+// bindIlluminanceArguments binds them: "params" (a PnLaunchParams by value), then one per
+// IlluminanceBuffers field.
+std::vector<std::string> illuminanceArgumentNames();
+
+// Binds every argument of the kernel `illuminance`. Throws std::logic_error for a missing buffer.
+void bindIlluminanceArguments(compute::KernelLaunch& launch, const PnLaunchParams& params,
+                              const IlluminanceBuffers& buffers);
 
 }  // namespace penumbra

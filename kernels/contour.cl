@@ -1,0 +1,224 @@
+/* The contour of the visible region, shared by both penumbra paths (Nishita §2.5(2),
+ * docs/method.md): the visible region is
+ * S' \ ∪ O_k, S' the face clipped by the horizon, O_k occluder k's contour as seen from P.
+ * Every boundary edge is oriented with the visible side on its left as seen from P; for such an
+ * edge (a → b) the visible side is {x : cross(a, b)·x < 0}. Its boundary is
+ *   (a) the parts of S' edges in no O_k, and
+ *   (b) the parts of each O_k's contour edges inside S' and in no other O_j, run in the
+ *       direction of the face that does not see P (so the hole is on their right).
+ * Each edge against a convex cone is one parameter interval (Cyrus–Beck on planes through P).
+ *
+ * Tie rule (one rule everywhere): when an edge lies in a boundary plane of another region, the
+ * two regions' visible sides coincide or are opposite. Coincide: the edge is kept once, by the
+ * region of lowest index (the source is lowest, then occluders in list order); opposite: the
+ * visible region is empty there and the edge is dropped. So two boxes side by side drop their
+ * shared contour edge, a duplicated occluder counts once, and an occluder edge collinear with
+ * a source edge never leaks (docs/method.md, "The tie rule").
+ *
+ * Here: occluder contour edges, side planes, piece ends at crossings and the term of a piece. */
+
+#include "occluders.cl"
+
+/* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
+ * on the contour. */
+/* Whether a face sees P is tested per edge rather than kept in a bit mask, so that a solid may
+ * have any number of faces (a finely faceted sphere has hundreds). */
+inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tables,
+                         float eps_length, float3* a, float3* b) {
+  int4 ed = tables->edges[o.firstEdge + e];
+  bool left_front = face_sees1(o, ed.z, tables, p.x, p.y, p.z, eps_length);
+  bool right_front = face_sees1(o, ed.w, tables, p.x, p.y, p.z, eps_length);
+  if (left_front == right_front) return false;
+  /* Run it as the face that does not see P does: that face's loop goes from -> to when it is
+   * the left face. */
+  float3 from = tables->occluderVertices[o.firstVertex + ed.x].xyz - p;
+  float3 to = tables->occluderVertices[o.firstVertex + ed.y].xyz - p;
+  if (left_front) {
+    *a = to;
+    *b = from;
+  } else {
+    *a = from;
+    *b = to;
+  }
+  return true;
+}
+
+/* ---------------------------------------------------------------------------------------------
+ * Side planes, piece ends and piece terms, each written once for a lane type T: float for one
+ * point (the scalar path; names end in 1) and float8 for eight (the lane path; names end in 8),
+ * with M the mask type comparisons give (int: 0 or 1; int8: 0 or -1). The two paths must agree
+ * here bit for bit: the tie rule compares side planes, and a visible contour closes only where
+ * both edges at a crossing compute the same vector. Masks combine with &, | and ! (not ~, which
+ * turns a scalar 1 into -2), and select() reads both kinds. The scalar path's float3 forms
+ * follow the definitions. */
+
+/* x·y − z·w to about one rounding of the result (Kahan's algorithm with fma), where the plain
+ * products would leave the rounding of the larger of them. */
+#define PN_DEFINE_DIFF_OF_PRODUCTS(T, S)             \
+  inline T diff_of_products##S(T x, T y, T z, T w) { \
+    T zw = z * w;                                    \
+    return fma(x, y, -zw) + fma(-z, w, zw);          \
+  }
+
+/* The unit normal of the side plane through P and the segment (a, b), along cross(a, b); zero
+ * where the plane is undefined: the segment is a point or its line passes through P. The cross
+ * product is taken as cross(a, b − a), whose products are |a|·|b − a| rather than |a|·|b|. Side
+ * planes are normalised once per point so that the tests need no square roots. Computed without
+ * fma contraction and normalised by rsqrt (the arithmetic of PoCL's cross() and normalize()), the
+ * open office's default and plain paths stay 8.3e-7 of E_unoccluded apart at worst; contracted
+ * and normalised by a division they are 1.02e-6 apart at (11.35, 5.35) m, past culling_test's
+ * bound of 1e-6. */
+#define PN_DEFINE_SIDE_NORMAL(T, M, S)                                                  \
+  inline void side_normal##S(T ax, T ay, T az, T bx, T by, T bz, T* mx, T* my, T* mz) { \
+    _Pragma("OPENCL FP_CONTRACT OFF") T ex = bx - ax, ey = by - ay, ez = bz - az;       \
+    T cx = ay * ez - az * ey, cy = az * ex - ax * ez, cz = ax * ey - ay * ex;           \
+    T square = cx * cx + cy * cy + cz * cz;                                             \
+    T la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);   \
+    M none = sqrt(square) <= PN_EPS_REL * la * lb;                                      \
+    T inverse = rsqrt(square);                                                          \
+    *mx = select(cx * inverse, (T)(0.0f), none);                                        \
+    *my = select(cy * inverse, (T)(0.0f), none);                                        \
+    *mz = select(cz * inverse, (T)(0.0f), none);                                        \
+  }
+
+/* The point at parameter t of the edge a → b (one coordinate), measured from the nearer end:
+ * the ends come back exactly (a + 1·(b − a) is not b in float), so that a visible contour still
+ * closes where consecutive edges meet. An open contour leaves an error of about eps·|a| / size,
+ * which for a small, distant source is 1e-5 of its illuminance instead of 1e-7. */
+#define PN_DEFINE_EDGE_POINT(T, S)                                       \
+  inline T edge_point##S(T a, T b, T t) {                                \
+    return select(b - (1.0f - t) * (b - a), a + t * (b - a), t <= 0.5f); \
+  }
+
+/* Whether the edge (a, b), of lengths la and lb, lies in a plane through P with unit normal m,
+ * from f0 = m·a and f1 = m·b: the test reads as the sine of the angle between the plane and
+ * each end's direction. */
+#define PN_DEFINE_IN_PLANE(T, M, S)                                       \
+  inline M in_plane##S(T f0, T f1, T la, T lb) {                          \
+    return (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb); \
+  }
+
+/* The tie rule where an edge owned by region `owner` (normal along cross(a, b): m_edge) lies in
+ * a side plane m of region v (`tied`, from in_plane): where the two visible sides coincide the
+ * region of lower index keeps the edge, so v does not cover it when the owner comes first (the
+ * lanes returned); where they are opposite the plane does not limit the edge, and the edge is
+ * dropped by the region whose edge lies in the plane. */
+#define PN_DEFINE_KEEPS_TIED_EDGE(T, M, S)                                                     \
+  inline M keeps_tied_edge##S(M tied, T m_edge_x, T m_edge_y, T m_edge_z, T mx, T my, T mz,    \
+                              int owner, int v) {                                              \
+    return owner < v ? tied & (m_edge_x * mx + m_edge_y * my + m_edge_z * mz > 0.0f) : (M)(0); \
+  }
+
+/* Clips [*t0, *t1] to {t : f0 + t (f1 − f0) >= 0} in the lanes of `clip`, remembering in *id0
+ * and *id1, per lane, the plane (its id) that set each end. Returns the lanes where the interval
+ * is not empty (or not clipped). */
+#define PN_DEFINE_CLIP_INTERVAL_ID(T, M, S)                                                \
+  inline M clip_interval_id##S(T f0, T f1, M clip, int id, T* t0, T* t1, M* id0, M* id1) { \
+    M n0 = f0 < 0.0f, n1 = f1 < 0.0f;                                                      \
+    M enters = clip & n0 & !n1, leaves = clip & !n0 & n1;                                  \
+    if (pn_any(enters | leaves)) { /* most planes do not cross the edge: no division */    \
+      T t = f0 / (f0 - f1);                                                                \
+      M up0 = enters & (t > *t0), up1 = leaves & (t < *t1);                                \
+      *t0 = select(*t0, t, up0);                                                           \
+      *t1 = select(*t1, t, up1);                                                           \
+      *id0 = select(*id0, (M)(id), up0);                                                   \
+      *id1 = select(*id1, (M)(id), up1);                                                   \
+    }                                                                                      \
+    return !(clip & n0 & n1) & (*t1 > *t0);                                                \
+  }
+
+/* Where a visible piece ends because another region's side plane crosses the edge, the boundary
+ * turns onto that region's edge, whose piece starts at the same direction: the line where the
+ * two side planes meet. Both edges take it as the cross product of the two unit normals in one
+ * order (that of their plane ids, self and other), so the two get the same vector bit for bit
+ * and the visible contour closes; ends computed on each edge from its own parameter t would
+ * leave a gap of a few roundings, and a gap of δ rad costs about L·δ however small the source
+ * looks (tests/distant_source_test.cpp). turn_to_point then points it to the side of the edge's
+ * own point p at t, in the lanes of `set`; where the planes are nearly parallel (sine below
+ * PN_EPS_REL) the line is ill-defined and p stays. Its length does not matter (piece_term). */
+#define PN_DEFINE_CROSSING(T, M, S)                                                                \
+  inline void crossing_direction##S(T msx, T msy, T msz, int self, T mox, T moy, T moz, int other, \
+                                    T* dx, T* dy, T* dz) {                                         \
+    const bool first = self < other;                                                               \
+    T px = first ? msx : mox, py = first ? msy : moy, pz = first ? msz : moz;                      \
+    T qx = first ? mox : msx, qy = first ? moy : msy, qz = first ? moz : msz;                      \
+    *dx = py * qz - pz * qy;                                                                       \
+    *dy = pz * qx - px * qz;                                                                       \
+    *dz = px * qy - py * qx;                                                                       \
+  }                                                                                                \
+  inline void turn_to_point##S(T dx, T dy, T dz, M set, T* px, T* py, T* pz) {                     \
+    M use = set & (dx * dx + dy * dy + dz * dz > PN_EPS_REL * PN_EPS_REL);                         \
+    if (!pn_any(use)) return;                                                                      \
+    T sign = select((T)(1.0f), (T)(-1.0f), dx * *px + dy * *py + dz * *pz < 0.0f);                 \
+    *px = select(*px, sign * dx, use);                                                             \
+    *py = select(*py, sign * dy, use);                                                             \
+    *pz = select(*pz, sign * dz, use);                                                             \
+  }
+
+/* Lambert's term of the piece (a → b) of an edge, as edge_term8: the great circle through the
+ * two ends as computed, so that pieces meeting at a crossing point close the contour exactly
+ * (the edge's own circle and the other edge's miss the computed crossing by a rounding each, and
+ * would leave that gap). The angle and the circle's normal must be good to a rounding of
+ * themselves, not of a radian: the terms of a small source nearly cancel, and an error δ in one
+ * angle costs about L·δ. edge_term8 gets that from b − a, exact where a and b are nearly
+ * parallel; the ends of a piece may be a crossing direction and a point of any length, so the
+ * cross product is made accurate instead (diff_of_products). */
+#define PN_DEFINE_PIECE_TERM(T, S)                                                        \
+  inline T piece_term##S(T ax, T ay, T az, T bx, T by, T bz, T nx, T ny, T nz) {          \
+    T cx = diff_of_products##S(ay, bz, az, by), cy = diff_of_products##S(az, bx, ax, bz), \
+      cz = diff_of_products##S(ax, by, ay, bx);                                           \
+    T s = sqrt(cx * cx + cy * cy + cz * cz);                                              \
+    T term = -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s;  \
+    return select(term, (T)(0.0f), s <= 0.0f);                                            \
+  }
+
+#define PN_DEFINE_CONTOUR_TWINS(T, M, S) \
+  PN_DEFINE_DIFF_OF_PRODUCTS(T, S)       \
+  PN_DEFINE_SIDE_NORMAL(T, M, S)         \
+  PN_DEFINE_EDGE_POINT(T, S)             \
+  PN_DEFINE_IN_PLANE(T, M, S)            \
+  PN_DEFINE_KEEPS_TIED_EDGE(T, M, S)     \
+  PN_DEFINE_CLIP_INTERVAL_ID(T, M, S)    \
+  PN_DEFINE_CROSSING(T, M, S)            \
+  PN_DEFINE_PIECE_TERM(T, S)
+PN_DEFINE_CONTOUR_TWINS(float, int, 1)   /* one body for the scalar path */
+PN_DEFINE_CONTOUR_TWINS(float8, int8, 8) /* and for eight lanes */
+#undef PN_DEFINE_CONTOUR_TWINS
+#undef PN_DEFINE_DIFF_OF_PRODUCTS
+#undef PN_DEFINE_SIDE_NORMAL
+#undef PN_DEFINE_EDGE_POINT
+#undef PN_DEFINE_IN_PLANE
+#undef PN_DEFINE_KEEPS_TIED_EDGE
+#undef PN_DEFINE_CLIP_INTERVAL_ID
+#undef PN_DEFINE_CROSSING
+#undef PN_DEFINE_PIECE_TERM
+
+/* The scalar path's float3 forms. */
+inline float3 side_normal(float3 a, float3 b) {
+  float x, y, z;
+  side_normal1(a.x, a.y, a.z, b.x, b.y, b.z, &x, &y, &z);
+  return (float3)(x, y, z);
+}
+
+inline bool no_plane(float3 m) {
+  return m.x == 0.0f && m.y == 0.0f && m.z == 0.0f;
+}
+
+inline float3 edge_point(float3 a, float3 b, float t) {
+  return (float3)(edge_point1(a.x, b.x, t), edge_point1(a.y, b.y, t), edge_point1(a.z, b.z, t));
+}
+
+/* The end of a piece at the crossing of side planes m_self (id `self`) and m_other (`other`),
+ * own_point where the crossing is ill-defined. */
+#define PN_ID_VERTEX -1 /* a piece end at the edge's own end, or at the horizon */
+inline float3 crossing_point(float3 m_self, int self, float3 m_other, int other, float3 own_point) {
+  float dx, dy, dz, x = own_point.x, y = own_point.y, z = own_point.z;
+  crossing_direction1(m_self.x, m_self.y, m_self.z, self, m_other.x, m_other.y, m_other.z, other,
+                      &dx, &dy, &dz);
+  turn_to_point1(dx, dy, dz, 1, &x, &y, &z);
+  return (float3)(x, y, z);
+}
+
+inline float piece_term(float3 a, float3 b, float3 n) {
+  return piece_term1(a.x, a.y, a.z, b.x, b.y, b.z, n.x, n.y, n.z);
+}

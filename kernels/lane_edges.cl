@@ -1,0 +1,224 @@
+/* The penumbra path in eight lanes (culling only; the plain path takes penumbra_scalar.cl).
+ * The same method and tie rule as penumbra_face, with every lane's view in one float8:
+ *  - the active occluders are the union over the lanes (each with a lane mask), in candidate
+ *    order, so "lower index" means the same in every lane;
+ *  - every edge of an active occluder is kept with a per-lane contour mask and orientation;
+ *  - S' is the face (or the lane's aperture rectangle) with each edge's part above the horizon
+ *    and, where the horizon cuts it, the chord: its side planes are the face's edge planes and,
+ *    in cut lanes, the horizon plane;
+ *  - the visible parts of an edge are [lo, hi] minus the union of the intervals the other
+ *    regions cover: a visible piece starts at lo or at the end of a covering interval that no
+ *    other interval covers, and ends at the next interval's start or hi; each piece is one
+ *    float8 edge term for the lanes that have it.
+ * Lanes this path does not take (a solid touching P, an occluder with more faces than it tracks)
+ * are returned in `scalar` for the scalar path; lanes whose occluders do not fit beside the other
+ * lanes' (more occluders or edges than it holds) in `rest`: the kernel calls it again for those
+ * lanes alone, and gives them to the scalar path when that does not help.
+ *
+ * Here: the lane-parallel contour store and the visible parts of one edge; the face itself is
+ * penumbra_lanes.cl. */
+
+#include "contour.cl"
+
+#define PN_VEC_OCCLUDERS 32 /* active occluders per work-item and face */
+#define PN_VEC_EDGES 192    /* their edges in all */
+#define PN_VEC_FACES 16     /* faces of one occluder */
+#define PN_VEC_SOURCE 8     /* vertices of the face */
+#define PN_VEC_PASSES 4     /* calls per work-item and face, each on the lanes the last left */
+
+/* An active occluder's edge in two parts: its side plane, which every other region's edges are
+ * tested against (the hot loop of visible_edge_term8, so kept compact), and its ends. */
+typedef struct {
+  float8 mx, my, mz; /* unit side-plane normal along cross(a, b); 0: none */
+  int8 on;           /* lanes where it is a contour edge with a side plane */
+} EdgePlane8;
+
+typedef struct {
+  float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
+  int8 on;                       /* lanes where it is a contour edge of the occluder */
+} ContourEdge8;
+
+/* The cone of directions from P to an occluder's bounding sphere: unit axis u and the sine and
+ * cosine of its half-angle, grown by PN_VEC_CONE_MARGIN (2 and -2 where P is inside the
+ * sphere). An edge whose great circle, or whose arc, stays outside it cannot be covered by the
+ * occluder, which visible_edge_term8 then skips without walking its side planes. */
+typedef struct {
+  float8 ux, uy, uz, sin_a, cos_a;
+} BoundCone8;
+
+#define PN_VEC_CONE_MARGIN 1e-3f
+
+typedef struct {
+  EdgePlane8 p[PN_VEC_EDGES];
+  ContourEdge8 e[PN_VEC_EDGES];
+  BoundCone8 cone[PN_VEC_OCCLUDERS];
+  int8 act[PN_VEC_OCCLUDERS];   /* the lanes each occluder is active in */
+  int8 whole[PN_VEC_OCCLUDERS]; /* lanes where each of its contour edges has a side plane */
+  int occ[PN_VEC_OCCLUDERS];    /* its index among the occluders */
+  int first[PN_VEC_OCCLUDERS + 1];
+  int na;
+} Contours8;
+
+/* A piece end per lane where another region's side plane set it: the cross product of the two
+ * unit side normals, in the order of their plane ids (crossing_point says why). */
+typedef struct {
+  float8 x, y, z;
+  int8 set;
+} PieceEnd8;
+
+inline void piece_end_clear8(PieceEnd8* e) {
+  e->x = e->y = e->z = 0.0f;
+  e->set = 0;
+}
+
+/* The side planes' ids in eight lanes: S' edges 0 … m − 1, the chord m, then the contour store. */
+#define PN_VEC_ID_CONTOUR (PN_VEC_SOURCE + 1)
+
+/* Once an interval is known to matter: the crossing points at its ends (id0, id1 from
+ * clip_interval_id8: the index of the plane that set each end, -1 for none), each the
+ * crossing_direction8 of the edge's unit side normal ms (plane id `self`) and that plane's. Plane
+ * k's normal is planes[k] and its id first_id + k. Done after the clipping, for the intervals that
+ * are kept, and once per distinct plane among the lanes (usually one or two) rather than at every
+ * plane that moves an end. */
+inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const EdgePlane8* planes,
+                           int first_id, int8 id0, int8 id1, int8 lanes, PieceEnd8* e0,
+                           PieceEnd8* e1) {
+  piece_end_clear8(e0);
+  piece_end_clear8(e1);
+  int8 left0 = lanes & (id0 >= 0), left1 = lanes & (id1 >= 0);
+  while (pn_any(left0 | left1)) {
+    const int k = __builtin_reduce_min(
+        min(select((int8)(INT_MAX), id0, left0), select((int8)(INT_MAX), id1, left1)));
+    const int id = first_id + k;
+    int8 at0 = left0 & (id0 == k), at1 = left1 & (id1 == k);
+    const EdgePlane8* c = &planes[k];
+    float8 dx, dy, dz;
+    crossing_direction8(msx, msy, msz, self, c->mx, c->my, c->mz, id, &dx, &dy, &dz);
+    e0->x = select(e0->x, dx, at0);
+    e0->y = select(e0->y, dy, at0);
+    e0->z = select(e0->z, dz, at0);
+    e0->set |= at0;
+    e1->x = select(e1->x, dx, at1);
+    e1->y = select(e1->y, dy, at1);
+    e1->z = select(e1->z, dz, at1);
+    e1->set |= at1;
+    left0 &= ~at0;
+    left1 &= ~at1;
+  }
+}
+
+/* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
+ * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
+void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                        float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
+                        const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
+                        float8 nx, float8 ny, float8 nz, const Contours8* cs, PnSum8* acc) {
+  if (!pn_any(on)) return;
+  float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
+  float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
+  /* For the bounding-cone test, set up at the first occluder that needs it: the unit normal of
+   * the edge's great circle, the unit ends and, at each end, the circle's tangent pointing into
+   * the arc. Where the edge's line passes near P (no circle) the test rejects nothing. */
+  bool cone_ready = false;
+  int8 arc = 0;
+  float8 gx = 0.0f, gy = 0.0f, gz = 0.0f, aux = 0.0f, auy = 0.0f, auz = 0.0f, bux = 0.0f,
+         buy = 0.0f, buz = 0.0f, tax = 0.0f, tay = 0.0f, taz = 0.0f, tbx = 0.0f, tby = 0.0f,
+         tbz = 0.0f;
+  /* The occluders that cover part of the edge in some lane, in order, with their intervals and
+   * the crossing points at the intervals' ends (most active occluders cover none of it). */
+  float8 c0[PN_VEC_OCCLUDERS], c1[PN_VEC_OCCLUDERS];
+  PieceEnd8 e0[PN_VEC_OCCLUDERS], e1[PN_VEC_OCCLUDERS];
+  int8 cov[PN_VEC_OCCLUDERS];
+  int nc = 0;
+  for (int v = 0; v < cs->na; ++v) {
+    float8 t0 = 0.0f, t1 = 1.0f;
+    int8 id0 = -1, id1 = -1;
+    int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
+    if (pn_any(covers)) {
+      if (!cone_ready) {
+        cone_ready = true;
+        float8 lm = sqrt(mex * mex + mey * mey + mez * mez);
+        arc = lm > PN_EPS_REL * la * lb;
+        float8 im = 1.0f / lm, ia = 1.0f / la, ib = 1.0f / lb;
+        gx = mex * im;
+        gy = mey * im;
+        gz = mez * im;
+        aux = ax * ia;
+        auy = ay * ia;
+        auz = az * ia;
+        bux = bx * ib;
+        buy = by * ib;
+        buz = bz * ib;
+        tax = gy * auz - gz * auy;
+        tay = gz * aux - gx * auz;
+        taz = gx * auy - gy * aux;
+        tbx = buy * gz - buz * gy;
+        tby = buz * gx - bux * gz;
+        tbz = bux * gy - buy * gx;
+      }
+      const BoundCone8* k = &cs->cone[v];
+      float8 d = k->ux * gx + k->uy * gy + k->uz * gz;
+      float8 ea = k->ux * aux + k->uy * auy + k->uz * auz;
+      float8 eb = k->ux * bux + k->uy * buy + k->uz * buz;
+      int8 inside_arc = (k->ux * tax + k->uy * tay + k->uz * taz >= 0.0f) &
+                        (k->ux * tbx + k->uy * tby + k->uz * tbz >= 0.0f);
+      int8 misses = (fabs(d) > k->sin_a) | ((ea < k->cos_a) & (eb < k->cos_a) & ~inside_arc);
+      covers &= ~(arc & misses);
+    }
+    for (int k = cs->first[v]; k < cs->first[v + 1] && pn_any(covers); ++k) {
+      const EdgePlane8* e = &cs->p[k];
+      int8 use = covers & e->on;
+      if (!pn_any(use)) continue;
+      float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
+      float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
+      int8 tied = use & in_plane8(f0, f1, la, lb);
+      covers &= ~keeps_tied_edge8(tied, mex, mey, mez, e->mx, e->my, e->mz, owner, v);
+      covers &= clip_interval_id8(f0, f1, use & ~tied, k, &t0, &t1, &id0, &id1);
+    }
+    if (!pn_any(covers)) continue;
+    crossing_ends8(msx, msy, msz, self, cs->p, PN_VEC_ID_CONTOUR, id0, id1, covers, &e0[nc],
+                   &e1[nc]);
+    c0[nc] = t0;
+    c1[nc] = t1;
+    cov[nc++] = covers;
+  }
+  /* Visible pieces: candidate starts lo and each covering interval's end. */
+  float8 starts[PN_VEC_OCCLUDERS + 1];
+  int8 kept[PN_VEC_OCCLUDERS + 1];
+  for (int j = -1; j < nc; ++j) {
+    float8 st = j < 0 ? lo : c1[j];
+    int8 valid = j < 0 ? on : cov[j];
+    valid &= (st >= lo) & (st < hi);
+    float8 end = hi;
+    int8 end_at = -1; /* the covering interval whose start ends the piece; -1: hi */
+    for (int w = 0; w < nc && pn_any(valid); ++w) {
+      valid &= ~(cov[w] & (c0[w] <= st) & (st < c1[w]));
+      int8 nearer = cov[w] & (c0[w] > st) & (c0[w] < end);
+      end = select(end, c0[w], nearer);
+      end_at = select(end_at, (int8)(w), nearer);
+    }
+    for (int i = 0; i <= j && pn_any(valid); ++i) valid &= ~(kept[i] & (starts[i] == st));
+    starts[j + 1] = st;
+    kept[j + 1] = valid;
+    valid &= end > st;
+    if (!pn_any(valid)) continue;
+    float8 p0x = edge_point8(ax, bx, st), p0y = edge_point8(ay, by, st),
+           p0z = edge_point8(az, bz, st);
+    float8 p1x = edge_point8(ax, bx, end), p1y = edge_point8(ay, by, end),
+           p1z = edge_point8(az, bz, end);
+    const PieceEnd8* start_end = j < 0 ? lo_end : &e1[j];
+    turn_to_point8(start_end->x, start_end->y, start_end->z, start_end->set, &p0x, &p0y, &p0z);
+    PieceEnd8 end_end = *hi_end;
+    for (int w = 0; w < nc; ++w) {
+      int8 at = valid & (end_at == w);
+      if (!pn_any(at)) continue;
+      end_end.x = select(end_end.x, e0[w].x, at);
+      end_end.y = select(end_end.y, e0[w].y, at);
+      end_end.z = select(end_end.z, e0[w].z, at);
+      end_end.set = select(end_end.set, e0[w].set, at);
+    }
+    turn_to_point8(end_end.x, end_end.y, end_end.z, end_end.set, &p1x, &p1y, &p1z);
+    float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
+    pn_sum_add8(acc, select((float8)(0.0f), term, valid));
+  }
+}

@@ -1,0 +1,375 @@
+/* The penumbra path for one point: the visible region S' \ ∪ O_k (contour.cl) for one lane at a
+ * time. The plain path (no culling) takes it for every shaded lane; with culling, the lanes the
+ * eight-lane path (penumbra_lanes.cl) hands back: a solid touching P, an occluder with more faces
+ * or a face with more vertices than it holds. */
+
+#include "contour.cl"
+#include "occluders.cl"
+
+/* S' vertices, relative to P: each clip by a plane through P adds at most one vertex (the
+ * horizon, a contact's face, a wedge piece's faces). */
+#define PN_MAX_SOURCE_POLYGON \
+  (PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS + PN_MAX_WEDGES * PN_MAX_WEDGE_FACES)
+
+typedef struct {
+  float3 sv[PN_MAX_SOURCE_POLYGON];
+  float3 sm[PN_MAX_SOURCE_POLYGON]; /* unit side normals of S' */
+  int ns;
+  /* The active occluders' contour edges, hole-oriented, relative to P, with their unit side-plane
+   * normals along cross(a, b) (zero where P is on the edge's line: no plane), extracted once per
+   * point: occluder v owns edges [first_contour[v], first_contour[v + 1]). */
+  float3 ca[PN_MAX_CONTOUR_EDGES], cb[PN_MAX_CONTOUR_EDGES], cm[PN_MAX_CONTOUR_EDGES];
+  int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
+  int na;
+} PenumbraState;
+
+/* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
+void clip_source(PenumbraState* st, float3 keep) {
+  float3 out[PN_MAX_SOURCE_POLYGON];
+  int count = 0;
+  float3 a = st->sv[st->ns - 1];
+  float ha = dot(keep, a);
+  for (int i = 0; i < st->ns; ++i) {
+    float3 b = st->sv[i];
+    float hb = dot(keep, b);
+    if ((ha >= 0.0f) != (hb >= 0.0f)) out[count++] = a + (ha / (ha - hb)) * (b - a);
+    if (hb >= 0.0f) out[count++] = b;
+    a = b;
+    ha = hb;
+  }
+  for (int i = 0; i < count; ++i) st->sv[i] = out[i];
+  st->ns = count;
+}
+
+/* A solid P lies on (no face sees P; P is not its own solid) has no contour line from P: the
+ * directions into it form the cone {x : f·x < 0 for every face f through P}. Faces whose
+ * closed inside already holds all of S' do not limit that cone within S' (the floor under a
+ * cabinet: the cabinet's bottom face holds everything above the horizon, so the point is
+ * dark). Returns how many faces limit it (-1: no face passes through P, a point strictly
+ * inside, which the host flags), the first `capacity` of them in `limiting` and, in `opposed`,
+ * the one most opposed to P's normal.
+ *  - None: P sees nothing of the source face.
+ *  - One: S' is clipped by it, exactly.
+ *  - Two or more: P lies on an edge or a corner of the solid (a floor point at a cabinet's
+ *    corner, a point on the edge two boxes share) and S' minus the wedge is not convex;
+ *    penumbra_face sums it in convex pieces (wedge_pieces_sum). */
+int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                  const PnSceneTables* tables, float eps_length, float3* limiting, int capacity,
+                  float3* opposed) {
+  int count = -1;
+  float most = 2.0f;
+  for (int j = 0; j < o.planeCount; ++j) {
+    float4 pl = tables->planes[o.firstPlane + j];
+    if (plane_height1(pl, p.x, p.y, p.z) < -eps_length) continue; /* not through P */
+    if (count < 0) count = 0;
+    bool holds_source = true;
+    for (int i = 0; i < st->ns && holds_source; ++i)
+      holds_source = dot(pl.xyz, st->sv[i]) <= PN_EPS_REL * length(st->sv[i]);
+    if (holds_source) continue;
+    if (count < capacity) limiting[count] = pl.xyz;
+    ++count;
+    if (dot(pl.xyz, n) < most) {
+      most = dot(pl.xyz, n);
+      *opposed = pl.xyz;
+    }
+  }
+  return count;
+}
+
+/* The plain path's test (kept as the foundation had it): the bounding sphere against the pyramid
+ * P + cone(face). */
+inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
+                                   const PnSceneTables* tables) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  const int m = face.vertexCount;
+  float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
+  for (int i = 0; i < m; ++i) {
+    float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+    /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
+    float3 side = cross(a, b);
+    if (dot(side, c) > r * length(side)) return true;
+    a = b;
+  }
+  return false;
+}
+
+/* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->sm): its bounding
+ * sphere is below the horizon or outside a side plane; or, for a lane that sees the face through
+ * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
+ * outside a side plane by more than eps_length. */
+bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
+                            bool vertices, const PnSceneTables* tables, float eps_length) {
+  float3 c = o.bound.xyz - p;
+  float r = o.bound.w;
+  if (dot(n, c) < -r) return true;
+  for (int i = 0; i < st->ns; ++i)
+    if (dot(st->sm[i], c) > r) return true; /* (a zero normal never passes) */
+  if (!vertices) return false;
+  for (int i = 0; i < st->ns; ++i) {
+    float3 m = st->sm[i]; /* a zero normal (no plane) never has the vertices outside */
+    bool out = true;
+    for (int k = 0; k < o.vertexCount && out; ++k)
+      out = dot(m, tables->occluderVertices[o.firstVertex + k].xyz - p) > eps_length;
+    if (out) return true;
+  }
+  return false;
+}
+
+/* The side planes' ids: S' edges first, then the active occluders' contour edges. */
+#define PN_ID_CONTOUR PN_MAX_SOURCE_POLYGON
+inline float3 plane_of(const PenumbraState* st, int id) {
+  return id < PN_ID_CONTOUR ? st->sm[id] : st->cm[id - PN_ID_CONTOUR];
+}
+
+/* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source),
+ * whose side plane has id `self` (its unit normal is plane_of(st, self)). */
+void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const PenumbraState* st,
+                       int* error, PnSum* acc) {
+  const float3 m_self = plane_of(st, self);
+  if (no_plane(m_self)) return; /* its line passes through P: no solid angle */
+  float lo[PN_MAX_VISIBLE_PIECES], hi[PN_MAX_VISIBLE_PIECES];
+  int lo_id[PN_MAX_VISIBLE_PIECES], hi_id[PN_MAX_VISIBLE_PIECES];
+  int pieces = 1;
+  lo[0] = 0.0f;
+  hi[0] = 1.0f;
+  lo_id[0] = hi_id[0] = PN_ID_VERTEX;
+  const float la = sqrt(pn_dot(a, a)), lb = sqrt(pn_dot(b, b));
+
+  if (owner >= 0) { /* an occluder edge counts only inside S' */
+    float t0 = 0.0f, t1 = 1.0f;
+    for (int i = 0; i < st->ns; ++i) {
+      float3 m = st->sm[i];
+      if (no_plane(m)) continue; /* repeated S' vertex: no side plane */
+      float f0 = -pn_dot(m, a), f1 = -pn_dot(m, b);
+      /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
+       * opposite → dropped. Either way this occluder edge is not counted. */
+      if (in_plane1(f0, f1, la, lb)) return;
+      if (!clip_interval_id1(f0, f1, 1, i, &t0, &t1, &lo_id[0], &hi_id[0])) return;
+    }
+    lo[0] = t0;
+    hi[0] = t1;
+  }
+
+  for (int v = 0; v < st->na; ++v) {
+    if (v == owner) continue;
+    float t0 = 0.0f, t1 = 1.0f;
+    int id0 = PN_ID_VERTEX, id1 = PN_ID_VERTEX;
+    bool covers = true;
+    for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
+      float3 m = st->cm[e];      /* inside the occluder's cone: m·x > 0 */
+      if (no_plane(m)) continue; /* P on the edge's line */
+      float f0 = pn_dot(m, a), f1 = pn_dot(m, b);
+      if (in_plane1(f0, f1, la, lb)) {
+        if (keeps_tied_edge1(1, m_self.x, m_self.y, m_self.z, m.x, m.y, m.z, owner, v))
+          covers = false;
+        continue;
+      }
+      if (!clip_interval_id1(f0, f1, 1, PN_ID_CONTOUR + e, &t0, &t1, &id0, &id1)) covers = false;
+    }
+    if (!covers) continue;
+    /* Subtract [t0, t1] from the sorted, disjoint visible pieces. */
+    float nlo[PN_MAX_VISIBLE_PIECES], nhi[PN_MAX_VISIBLE_PIECES];
+    int nlo_id[PN_MAX_VISIBLE_PIECES], nhi_id[PN_MAX_VISIBLE_PIECES];
+    int count = 0;
+    for (int k = 0; k < pieces; ++k) {
+      if (t1 <= lo[k] || t0 >= hi[k]) {
+        nlo[count] = lo[k];
+        nhi[count] = hi[k];
+        nlo_id[count] = lo_id[k];
+        nhi_id[count] = hi_id[k];
+        ++count;
+        continue;
+      }
+      if (t0 > lo[k]) {
+        nlo[count] = lo[k];
+        nhi[count] = t0;
+        nlo_id[count] = lo_id[k];
+        nhi_id[count] = id0;
+        ++count;
+      }
+      if (t1 < hi[k]) {
+        if (count == PN_MAX_VISIBLE_PIECES) {
+          *error |= PN_ERROR_TOO_MANY_PIECES;
+          break;
+        }
+        nlo[count] = t1;
+        nhi[count] = hi[k];
+        nlo_id[count] = id1;
+        nhi_id[count] = hi_id[k];
+        ++count;
+      }
+    }
+    pieces = count;
+    for (int k = 0; k < pieces; ++k) {
+      lo[k] = nlo[k];
+      hi[k] = nhi[k];
+      lo_id[k] = nlo_id[k];
+      hi_id[k] = nhi_id[k];
+    }
+    if (pieces == 0) return;
+  }
+
+  for (int k = 0; k < pieces; ++k) {
+    float3 p0 = edge_point(a, b, lo[k]), p1 = edge_point(a, b, hi[k]);
+    if (lo_id[k] != PN_ID_VERTEX)
+      p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0);
+    if (hi_id[k] != PN_ID_VERTEX)
+      p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1);
+    pn_sum_add(acc, piece_term(p0, p1, n));
+  }
+}
+
+/* E / (L/2) of the visible part of S' (st->sv) past the active occluders. */
+float region_sum(PenumbraState* st, float3 n, int* error) {
+  for (int i = 0; i < st->ns; ++i)
+    st->sm[i] = side_normal(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1]);
+  PnSum sum = {0.0f, 0.0f};
+  for (int i = 0; i < st->ns; ++i)
+    visible_edge_term(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1], -1, i, n, st, error, &sum);
+  for (int u = 0; u < st->na; ++u)
+    for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
+      visible_edge_term(st->ca[e], st->cb[e], u, PN_ID_CONTOUR + e, n, st, error, &sum);
+  return sum.s + sum.c;
+}
+
+/* S' minus the wedges of the solids P lies on the edge or corner of (contact_faces), as disjoint
+ * convex pieces: for a wedge of faces f_1 … f_m the part of a piece outside the wedge is the
+ * union over i of {f_i·x ≥ 0, f_j·x < 0 for j < i}; every piece is integrated like S' (the tie
+ * rule holds for any convex region) and the pieces' shared sides cancel in the sum. */
+float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX_WEDGE_FACES],
+                       const int* wedge_faces, int wedges, int* error) {
+  float3 base[PN_MAX_SOURCE_POLYGON];
+  const int base_count = st->ns;
+  for (int i = 0; i < base_count; ++i) base[i] = st->sv[i];
+  int pieces = 1;
+  for (int k = 0; k < wedges; ++k) pieces *= wedge_faces[k];
+  PnSum sum = {0.0f, 0.0f};
+  for (int piece = 0; piece < pieces; ++piece) {
+    st->ns = base_count;
+    for (int i = 0; i < base_count; ++i) st->sv[i] = base[i];
+    int code = piece;
+    for (int k = 0; k < wedges && st->ns >= 3; ++k) {
+      const int chosen = code % wedge_faces[k];
+      code /= wedge_faces[k];
+      for (int j = 0; j < chosen && st->ns >= 3; ++j) clip_source(st, -wedge[k][j]);
+      if (st->ns >= 3) clip_source(st, wedge[k][chosen]);
+    }
+    if (st->ns >= 3) pn_sum_add(&sum, region_sum(st, n, error));
+  }
+  return sum.s + sum.c;
+}
+
+/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
+ * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
+float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
+                    const PnSceneTables* tables, float eps_length, bool aperture,
+                    const float3* corners, int* error) {
+  if (!in_front1(face, p.x, p.y, p.z)) return 0.0f;
+  PenumbraState st;
+
+  /* S': the face (or its visible rectangle) clipped by the horizon plane through P
+   * (Sutherland–Hodgman). */
+  st.ns = 0;
+  if (aperture) {
+    for (int i = 0; i < 4; ++i) st.sv[i] = corners[i];
+    st.ns = 4;
+    clip_source(&st, n);
+  } else {
+    const int m = face.vertexCount;
+    float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
+    float ha = dot(n, a);
+    for (int i = 0; i < m; ++i) {
+      float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+      float hb = dot(n, b);
+      if (ha >= 0.0f) st.sv[st.ns++] = a;
+      if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
+      a = b;
+      ha = hb;
+    }
+  }
+  if (st.ns < 3) return 0.0f;
+  /* A face seen edge-on (every vertex of S' within the tolerance of the horizon, e.g. a source
+   * corner exactly in P's tangent plane) gives nothing: its E is below PN_EPS_REL · π·L, and the
+   * side planes of such a sliver have no direction, so occluder edges would be taken as inside it
+   * and integrated as holes (found by the stress suite: E = -11 lx, bench/degenerate_stress). */
+  float rise = 0.0f;
+  for (int i = 0; i < st.ns; ++i) rise = fmax(rise, dot(n, st.sv[i]) / length(st.sv[i]));
+  if (rise <= PN_EPS_REL) return 0.0f;
+
+  for (int i = 0; i < st.ns; ++i)
+    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+
+  /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
+   * P is outside their penumbra volume or they miss the pyramid to S'); those with none are
+   * solids P lies on. */
+  st.na = 0;
+  st.first_contour[0] = 0;
+  int contacts = 0;
+  float3 wedge[PN_MAX_WEDGES][PN_MAX_WEDGE_FACES];
+  int wedge_faces[PN_MAX_WEDGES];
+  int wedges = 0;
+  const int count = occluder_count(pf, face);
+  for (int i = 0; i < count; ++i) {
+    PnOccluder o = tables->occluders[occluder_index(i, pf, face, tables)];
+    if (aperture && o.behindAperture) continue;
+    if (o.solid == own || !not_separated1(o, tables, p.x, p.y, p.z, eps_length, 1)) continue;
+    if (culling && !in_penumbra_volume1(o, tables, p.x, p.y, p.z, eps_length, 1)) continue;
+    bool any_front = false;
+    for (int j = 0; j < o.planeCount && !any_front; ++j)
+      any_front = face_sees1(o, j, tables, p.x, p.y, p.z, eps_length);
+    if (!any_front) {
+      if (contacts == PN_MAX_CONTACTS) {
+        *error |= PN_ERROR_TOO_MANY_CONTACTS;
+        break;
+      }
+      ++contacts;
+      float3 limiting[PN_MAX_WEDGE_FACES], opposed;
+      const int m =
+          contact_faces(&st, p, n, o, tables, eps_length, limiting, PN_MAX_WEDGE_FACES, &opposed);
+      if (m < 0) continue;
+      if (m == 0) return 0.0f;
+      if (m >= 2 && m <= PN_MAX_WEDGE_FACES && wedges < PN_MAX_WEDGES) {
+        for (int j = 0; j < m; ++j) wedge[wedges][j] = limiting[j];
+        wedge_faces[wedges++] = m;
+        continue;
+      }
+      /* One face, exactly; or (more wedges or faces than the pieces hold: P at a vertex where
+       * many facets meet, a set of measure zero) the face most opposed to P's normal alone. */
+      clip_source(&st, m == 1 ? limiting[0] : opposed);
+      if (st.ns < 3) return 0.0f;
+      for (int i = 0; i < st.ns; ++i)
+        st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+      continue;
+    }
+    if (culling ? outside_source_pyramid(&st, p, n, o, aperture, tables, eps_length)
+                : sphere_outside_pyramid(p, n, o, face, tables))
+      continue;
+    if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
+      *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
+      break;
+    }
+    int c = st.first_contour[st.na];
+    for (int e = 0; e < o.edgeCount; ++e) {
+      float3 ea, eb;
+      if (!contour_edge(e, o, p, tables, eps_length, &ea, &eb)) continue;
+      if (c == PN_MAX_CONTOUR_EDGES) {
+        *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
+        break;
+      }
+      st.ca[c] = ea;
+      st.cb[c] = eb;
+      st.cm[c] = side_normal(ea, eb);
+      ++c;
+    }
+    ++st.na;
+    st.first_contour[st.na] = c;
+  }
+
+  const float sum = wedges == 0 ? region_sum(&st, n, error)
+                                : wedge_pieces_sum(&st, n, wedge, wedge_faces, wedges, error);
+  /* A visible region gives no negative light: a sum below 0 is the float round-off of an empty
+   * one (an umbra's edge: -5e-6 lx where π·L = 3142 lx, bench/degenerate_stress). */
+  return fmax(sum, 0.0f);
+}
