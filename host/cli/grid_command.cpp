@@ -12,6 +12,7 @@
 #include "cli/version.hpp"
 #include "evaluation/estimator.hpp"
 #include "evaluation/scene_evaluation.hpp"
+#include "output/grid_file_writer.hpp"
 #include "output/result_files.hpp"
 #include "output/run_report.hpp"
 #include "output/staged_directory.hpp"
