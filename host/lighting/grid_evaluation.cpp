@@ -180,9 +180,9 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   GridMetricsSum sums;
 
   // Points are classified a block at a time, ahead of the chunks that take them, and in
-  // parallel: a point's answer depends on that point alone. A block is at least one batch, so
-  // that the parallel loop's overhead is paid once per batch or less.
-  const std::size_t block = std::max<std::size_t>(batchSize, 4096);
+  // parallel: a point's answer depends on that point alone. 4096 points (230 KB) stay in cache
+  // until the chunk takes them, and are four tasks of 1024 for the parallel loop.
+  constexpr std::size_t block = 4096;
   std::vector<SamplePoint> aheadPoints;
   std::vector<int> aheadInside;
   std::size_t aheadFirst = 0;

@@ -87,9 +87,8 @@ struct GridRun {
 
 // Evaluates the points that are not inside solids, `batchSize` at a time (the estimator sees the
 // same batches whatever the sink does), gives E = 0 to the others, and hands every point to
-// `sink` in grid order. The points are classified in parallel, a block of at least a batch at a
-// time ahead of the batch that takes them. Memory: that block, one batch of points and the inside
-// points between them.
+// `sink` in grid order. The points are classified in parallel, a block of 4096 at a time ahead
+// of the batch that takes them. Memory: one batch of points and the inside points between them.
 GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
                    const IlluminanceEstimator& estimate, std::size_t batchSize,
                    const GridBatchSink& sink, const ProgressCallback& progress = {});

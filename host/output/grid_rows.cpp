@@ -34,10 +34,12 @@ void GridRows::addIlluminance(double illuminance) {
 }
 
 void GridRows::addResLine(const char* text, std::size_t size) {
+  // A fixed-size copy (a few moves, no call) into room for the longest text, then cut.
   const std::size_t start = res_.size();
-  res_.resize(start + size + 1);
-  std::memcpy(res_.data() + start, text, size);
+  res_.resize(start + kMaxNumberText);
+  std::memcpy(res_.data() + start, text, kMaxNumberText);
   res_[start + size] = '\n';
+  res_.resize(start + size + 1);
 }
 
 }  // namespace penumbra
