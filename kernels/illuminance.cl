@@ -15,7 +15,7 @@
  * an occluder may block), written source by source with row length params.sourceStride.
  * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. params.paths
  * selects the path (PN_PATH_*). The host binds these arguments by name and in this order
- * (lighting/kernel_scene.cpp; tests/launch_interface_test.cpp holds the two together). */
+ * (engine/kernel_scene.cpp; tests/launch_interface_test.cpp holds the two together). */
 
 __kernel void illuminance(
     const PnLaunchParams params, __global const float* point_x, __global const float* point_y,

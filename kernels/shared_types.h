@@ -95,7 +95,7 @@ typedef struct {
 
 /* The scalar launch parameters of the illuminance kernel (kernels/illuminance.cl), passed by
  * value: OpenCL C 1.2 takes a struct kernel argument only when it holds no pointer, so the
- * buffers are arguments of their own (lighting/kernel_scene.hpp binds both in one place). */
+ * buffers are arguments of their own (engine/kernel_scene.hpp binds both in one place). */
 typedef struct {
   pn_int faceCount;    /* source faces in the faces table */
   float epsLength;     /* the kernel's absolute length tolerance (m) */

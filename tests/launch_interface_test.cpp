@@ -1,7 +1,7 @@
 // The illuminance kernel's launch interface, host against device on PoCL: the layout of the
 // structs that cross (kernels/shared_types.h) as the kernel compiler lays them out, a
 // PnLaunchParams passed by value arriving field for field, and the kernel's argument names in the
-// order the host binds them (lighting/kernel_scene.hpp).
+// order the host binds them (engine/kernel_scene.hpp).
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "cl/buffer.hpp"
-#include "lighting/kernel_scene.hpp"
+#include "engine/kernel_scene.hpp"
 #include "test_device.hpp"
 
 namespace penumbra {

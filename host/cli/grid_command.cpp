@@ -13,6 +13,7 @@
 #include "engine/estimator.hpp"
 #include "grid/run_report.hpp"
 #include "grid/scene_grids.hpp"
+#include "output/grid_file_writer.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "output/summary_table.hpp"

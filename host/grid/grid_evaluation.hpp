@@ -1,7 +1,7 @@
 #pragma once
 // From a calculation grid to illuminance at its points. The estimator is a parameter so that the
 // kernel path (IlluminanceEngine) and the reference (referenceIlluminance) run through the same
-// code; nothing here writes files (DESIGN.md), the output layer does.
+// code; nothing here writes files, the output layer does.
 //
 // A grid is evaluated in batches and its results are handed on batch by batch (streamGrid), so
 // that a grid of 10^7 points needs the memory of one batch, not of the grid: the points of a
@@ -86,7 +86,8 @@ struct GridRun {
 
 // Evaluates the points that are not inside solids, `batchSize` at a time (the estimator sees the
 // same batches whatever the sink does), gives E = 0 to the others, and hands every point to
-// `sink` in grid order. Memory: one batch of points and the inside points between them.
+// `sink` in grid order. The points are classified in parallel, a block of 4096 at a time ahead
+// of the batch that takes them. Memory: one batch of points and the inside points between them.
 GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
                    const IlluminanceEstimator& estimate, std::size_t batchSize,
                    const GridBatchSink& sink, const ProgressCallback& progress = {});

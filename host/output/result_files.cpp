@@ -5,10 +5,10 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
-#include <iterator>
 #include <set>
 #include <stdexcept>
 
+#include "output/grid_rows.hpp"
 #include "output/staged_directory.hpp"
 
 namespace penumbra {
@@ -105,80 +105,30 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
   return names;
 }
 
-namespace {
-
-constexpr const char* kCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
-
-// One row of a grid's .csv and one line of its .res: the only place their format is spelt out.
-void appendCsvRow(fmt::memory_buffer& out, const Vec3& p, const Vec3& n, double e,
-                  const std::string& insideField) {
-  fmt::format_to(std::back_inserter(out), "{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(),
-                 n.y(), n.z(), e, insideField);
-}
-
-void appendResLine(fmt::memory_buffer& out, double e) {
-  fmt::format_to(std::back_inserter(out), "{}\n", e);
-}
-
-void flush(std::ostream& out, fmt::memory_buffer& buffer) {
-  out.write(buffer.data(), static_cast<std::streamsize>(buffer.size()));
-  buffer.clear();
-}
-
-}  // namespace
-
 void writeGridCsv(std::ostream& out, const GridReport& grid) {
-  out << kCsvHeader;
-  fmt::memory_buffer buffer;
+  out.write(kGridCsvHeader.data(), static_cast<std::streamsize>(kGridCsvHeader.size()));
+  GridRows rows;
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
-    appendCsvRow(buffer, grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
-                 csvField(grid.insideSolids[i]));
-    if (buffer.size() > (1u << 20)) flush(out, buffer);
+    rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
+             csvField(grid.insideSolids[i]));
+    if (rows.csv().size() > (1u << 20)) {
+      out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
+      rows.clear();
+    }
   }
-  flush(out, buffer);
+  out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
 }
 
 void writeGridRes(std::ostream& out, const GridReport& grid) {
-  fmt::memory_buffer buffer;
-  for (double e : grid.illuminance) appendResLine(buffer, e);
-  flush(out, buffer);
-}
-
-GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                               const CalculationGrid& grid)
-    : grid_(&grid) {
-  for (const Solid& solid : scene.solids) insideNames_.push_back(csvField(solid.name));
-  const std::string stem = gridFileStem(grid.name);
-  csvPath_ = directory / (stem + ".csv");
-  resPath_ = directory / (stem + ".res");
-  csv_.open(csvPath_, std::ios::binary);
-  if (!csv_) throw std::runtime_error("cannot create " + csvPath_.string());
-  res_.open(resPath_, std::ios::binary);
-  if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
-  csv_ << kCsvHeader;
-}
-
-void GridFileWriter::write(const GridBatch& batch) {
-  const std::string none;
-  fmt::memory_buffer csv, res;
-  for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
-    const std::size_t i = batch.first + k;
-    const int inside = batch.inside[k];
-    appendCsvRow(csv, grid_->position(i), grid_->normal(i), batch.illuminance[k],
-                 inside >= 0 ? insideNames_.at(inside) : none);
-    appendResLine(res, batch.illuminance[k]);
+  GridRows rows;
+  for (std::size_t i = 0; i < grid.illuminance.size(); ++i) {
+    rows.addIlluminance(grid.illuminance[i]);
+    if (rows.res().size() > (1u << 20)) {
+      out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
+      rows.clear();
+    }
   }
-  flush(csv_, csv);
-  flush(res_, res);
-  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
-  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
-}
-
-void GridFileWriter::close() {
-  csv_.close();
-  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
-  res_.close();
-  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+  out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
 }
 
 nlohmann::json summaryJson(const RunReport& report) {

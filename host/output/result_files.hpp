@@ -2,11 +2,11 @@
 // The files of a `penumbra grid` run, all in one output directory:
 //   <grid>.csv     x_m,y_m,z_m,nx,ny,nz,E_lx,inside   one row per point, in the grid's order
 //   <grid>.res     E in lx, one value a line, same order (what `rtrace -h -ov` gives Radiance
-//   users) summary.json   scene, device, timing and the metrics of every grid, units in the key
-//   names
-// Numbers are written in the shortest form that reads back to the same double.
+//                  users)
+//   summary.json   scene, device, timing and the metrics of every grid, units in the key names
+// Numbers are written in the shortest form that reads back to the same double (grid_rows.hpp).
+// A grid computed batch by batch goes to its files through GridFileWriter (grid_file_writer.hpp).
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <ostream>
 #include <string>
@@ -40,25 +40,6 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
 void writeGridCsv(std::ostream& out, const GridReport& grid);
 void writeGridRes(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
-
-// The .csv and .res files of one grid, written batch by batch while the grid is evaluated
-// (streamGrid), so that no per-point data outlives its batch; the bytes are those writeGridCsv
-// and writeGridRes write for the same values. Every solid of `scene` must outlive it.
-class GridFileWriter {
- public:
-  // Creates <directory>/<stem>.csv and .res (gridFileStem) and writes the CSV header.
-  GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                 const CalculationGrid& grid);
-  void write(const GridBatch& batch);
-  // Flushes and closes both files; throws std::runtime_error naming a file that failed.
-  void close();
-
- private:
-  const CalculationGrid* grid_;
-  std::vector<std::string> insideNames_;  // per solid, as a CSV field
-  std::filesystem::path csvPath_, resPath_;
-  std::ofstream csv_, res_;
-};
 
 // Writes summary.json (summaryJson) into `directory`.
 void writeSummaryFile(const RunReport& report, const std::filesystem::path& directory);

@@ -1,0 +1,100 @@
+#include "output/grid_file_writer.hpp"
+
+#include <stdexcept>
+#include <utility>
+
+#include "output/result_files.hpp"
+
+namespace penumbra {
+
+GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
+                               const CalculationGrid& grid)
+    : grid_(&grid) {
+  for (const Solid& solid : scene.solids) insideNames_.push_back(csvField(solid.name));
+  const std::string stem = gridFileStem(grid.name);
+  csvPath_ = directory / (stem + ".csv");
+  resPath_ = directory / (stem + ".res");
+  csv_.open(csvPath_, std::ios::binary);
+  if (!csv_) throw std::runtime_error("cannot create " + csvPath_.string());
+  res_.open(resPath_, std::ios::binary);
+  if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
+  csv_.write(kGridCsvHeader.data(), static_cast<std::streamsize>(kGridCsvHeader.size()));
+  thread_ = std::thread([this] { writeBatches(); });
+}
+
+GridFileWriter::~GridFileWriter() {
+  if (!thread_.joinable()) return;
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = abandoned_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+}
+
+void GridFileWriter::write(const GridBatch& batch) {
+  std::unique_lock lock(mutex_);
+  changed_.wait(lock, [&] { return !waiting_ || error_; });
+  if (error_) std::rethrow_exception(error_);
+  Batch& next = waiting_.emplace(std::move(spare_));
+  next.first = batch.first;
+  next.illuminance.assign(batch.illuminance.begin(), batch.illuminance.end());
+  next.inside.assign(batch.inside.begin(), batch.inside.end());
+  lock.unlock();
+  changed_.notify_all();
+}
+
+void GridFileWriter::close() {
+  {
+    const std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  changed_.notify_all();
+  thread_.join();
+  if (error_) std::rethrow_exception(error_);
+  csv_.close();
+  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
+  res_.close();
+  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+}
+
+void GridFileWriter::writeBatches() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    changed_.wait(lock, [&] { return waiting_ || stopping_; });
+    if (!waiting_ || abandoned_) return;
+    Batch batch = std::move(*waiting_);
+    waiting_.reset();
+    const bool failed = error_ != nullptr;
+    lock.unlock();
+    changed_.notify_all();  // the slot is free for the next batch
+    std::exception_ptr error;
+    if (!failed) {
+      try {
+        writeBatch(batch);
+      } catch (...) {
+        error = std::current_exception();
+      }
+    }
+    lock.lock();
+    if (error && !error_) error_ = error;
+    spare_ = std::move(batch);
+    if (error) changed_.notify_all();  // a write() waiting for the slot learns of it
+  }
+}
+
+void GridFileWriter::writeBatch(const Batch& batch) {
+  rows_.clear();
+  for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
+    const std::size_t i = batch.first + k;
+    const int inside = batch.inside[k];
+    rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k],
+              inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view());
+  }
+  csv_.write(rows_.csv().data(), static_cast<std::streamsize>(rows_.csv().size()));
+  res_.write(rows_.res().data(), static_cast<std::streamsize>(rows_.res().size()));
+  if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
+  if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+}
+
+}  // namespace penumbra

@@ -1,0 +1,45 @@
+#include "output/grid_rows.hpp"
+
+#include <cstring>
+
+namespace penumbra {
+
+void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance,
+                   std::string_view insideField) {
+  // Room for seven numbers and their separators, the field and the line break; the buffer is
+  // then cut to what was written (fmt's resize leaves new bytes unset).
+  const std::size_t start = csv_.size();
+  csv_.resize(start + 7 * (kMaxNumberText + 1) + insideField.size() + 1);
+  char* out = csv_.data() + start;
+  for (const double value :
+       {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
+    out = numbers_.write(out, value);
+    *out++ = ',';
+  }
+  const char* e = out;
+  out = writeNumber(out, illuminance);  // E hardly ever repeats: not looked up
+  const auto eSize = static_cast<std::size_t>(out - e);
+  addResLine(e, eSize);
+  *out++ = ',';
+  if (!insideField.empty()) std::memcpy(out, insideField.data(), insideField.size());
+  out += insideField.size();
+  *out++ = '\n';
+  csv_.resize(static_cast<std::size_t>(out - csv_.data()));
+}
+
+void GridRows::addIlluminance(double illuminance) {
+  char text[kMaxNumberText];
+  const char* end = writeNumber(text, illuminance);
+  addResLine(text, static_cast<std::size_t>(end - text));
+}
+
+void GridRows::addResLine(const char* text, std::size_t size) {
+  // A fixed-size copy (a few moves, no call) into room for the longest text, then cut.
+  const std::size_t start = res_.size();
+  res_.resize(start + kMaxNumberText);
+  std::memcpy(res_.data() + start, text, kMaxNumberText);
+  res_[start + size] = '\n';
+  res_.resize(start + size + 1);
+}
+
+}  // namespace penumbra

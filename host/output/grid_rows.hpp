@@ -1,0 +1,42 @@
+#pragma once
+// The rows of a grid's .csv and the lines of its .res, the only place their format is spelt out:
+//   <grid>.csv   x_m,y_m,z_m,nx,ny,nz,E_lx,inside   one row per point; `inside` the name of the
+//                solid containing the point as a CSV field, empty for none
+//   <grid>.res   E_lx, one value a line
+// Numbers are written as number_text.hpp says (fmt's "{}": the shortest text that reads back to
+// the same double).
+#include <fmt/format.h>
+
+#include <string_view>
+
+#include "geometry/vec.hpp"
+#include "output/number_text.hpp"
+
+namespace penumbra {
+
+inline constexpr std::string_view kGridCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
+
+// Rows of both files, appended point by point into two buffers that keep their memory when
+// cleared, so that writing a batch allocates nothing once the buffers have grown to a batch.
+class GridRows {
+ public:
+  // Appends the point's CSV row and its .res line; `insideField` is already a CSV field.
+  void add(const Vec3& position, const Vec3& normal, double illuminance,
+           std::string_view insideField);
+  // Appends the .res line alone.
+  void addIlluminance(double illuminance);
+  std::string_view csv() const { return {csv_.data(), csv_.size()}; }
+  std::string_view res() const { return {res_.data(), res_.size()}; }
+  void clear() {
+    csv_.clear();
+    res_.clear();
+  }
+
+ private:
+  void addResLine(const char* text, std::size_t size);
+
+  NumberTextCache numbers_;  // coordinates and normals repeat from row to row
+  fmt::memory_buffer csv_, res_;
+};
+
+}  // namespace penumbra
