@@ -6,7 +6,7 @@
 // kernel err by up to 2.0e-3 (eight-lane path) and 1.3e-3 (scalar path) of this panel's light
 // here: the visible contour was assembled from crossing points each edge computed for itself, and
 // a gap of δ rad in a contour costs about L·δ however small the source looks (kernels/
-// illuminance.cl, crossing_point). Every path is held to 1e-4 of the panel's unoccluded value,
+// contour.cl, crossing_direction). Every path is held to 1e-4 of the panel's unoccluded value,
 // twice the float rounding of the unoccluded formula itself at these points (5.4e-5 measured: the
 // terms of a source 10 m away cancel to 1/175 of their size). Measured: 4.6e-5 eight lanes,
 // 4.5e-5 scalar, 7.1e-5 plain.
