@@ -19,10 +19,10 @@
 
 #include "occluders.cl"
 
-/* The contour edge e of an active occluder, hole-oriented, relative to P. False when e is not
- * on the contour. */
-/* Whether a face sees P is tested per edge rather than kept in a bit mask, so that a solid may
- * have any number of faces (a finely faceted sphere has hundreds). */
+/* The contour edge e of an active occluder, hole-oriented, relative to P: an edge between a face
+ * that sees P and one that does not. False when e is not on the contour. Whether a face sees P is
+ * tested per edge rather than kept in a bit mask, so that a solid may have any number of faces (a
+ * finely faceted sphere has hundreds). */
 inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tables,
                          float eps_length, float3* a, float3* b) {
   int4 ed = tables->edges[o.firstEdge + e];

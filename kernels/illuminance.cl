@@ -36,6 +36,7 @@ __kernel void illuminance(
   float8 px = vload8(g, point_x), py = vload8(g, point_y), pz = vload8(g, point_z);
   float8 nx = vload8(g, normal_x), ny = vload8(g, normal_y), nz = vload8(g, normal_z);
   int8 own = vload8(g, point_solid);
+  const Points8 points = {px, py, pz, nx, ny, nz, own};
   float lane_px[PN_LANES], lane_py[PN_LANES], lane_pz[PN_LANES];
   float lane_nx[PN_LANES], lane_ny[PN_LANES], lane_nz[PN_LANES];
   int lane_own[PN_LANES];
@@ -89,12 +90,13 @@ __kernel void illuminance(
       /* The eight-lane path; the lanes whose occluders it could not hold beside the others' get
        * another call among themselves, whose union of occluders is smaller, while that helps. */
       if (lanes_path) {
+        const FaceView8 fv = {face, pf, view, ap};
         int8 pending = t.shaded;
         scalar_lanes = 0;
         for (int pass = 0; pass < PN_VEC_PASSES && pn_any(pending); ++pass) {
           int8 asked = pending, scalar;
-          float8 e_pen = penumbra_face8(px, py, pz, nx, ny, nz, own, asked, face, pf, view, ap,
-                                        &tables, eps_length, inside, &pending, &scalar);
+          float8 e_pen =
+              penumbra_face8(&points, asked, &fv, &tables, eps_length, inside, &pending, &scalar);
           scalar_lanes |= scalar;
           int8 done = asked & ~(pending | scalar);
           e_face = select(e_face, e_pen, done);

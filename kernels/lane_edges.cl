@@ -48,15 +48,17 @@ typedef struct {
 
 #define PN_VEC_CONE_MARGIN 1e-3f
 
+/* The active occluders of one call of penumbra_face8, in candidate order, and their contour
+ * edges: occluder v owns edges [first_edge[v], first_edge[v + 1]). */
 typedef struct {
-  EdgePlane8 p[PN_VEC_EDGES];
-  ContourEdge8 e[PN_VEC_EDGES];
+  EdgePlane8 plane[PN_VEC_EDGES];
+  ContourEdge8 edge[PN_VEC_EDGES];
   BoundCone8 cone[PN_VEC_OCCLUDERS];
-  int8 act[PN_VEC_OCCLUDERS];   /* the lanes each occluder is active in */
-  int8 whole[PN_VEC_OCCLUDERS]; /* lanes where each of its contour edges has a side plane */
-  int occ[PN_VEC_OCCLUDERS];    /* its index among the occluders */
-  int first[PN_VEC_OCCLUDERS + 1];
-  int na;
+  int8 lanes[PN_VEC_OCCLUDERS];   /* the lanes each occluder is active in */
+  int8 whole[PN_VEC_OCCLUDERS];   /* lanes where each of its contour edges has a side plane */
+  int occluder[PN_VEC_OCCLUDERS]; /* its index among the occluders */
+  int first_edge[PN_VEC_OCCLUDERS + 1];
+  int count;
 } Contours8;
 
 /* A piece end per lane where another region's side plane set it: the cross product of the two
@@ -130,10 +132,10 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
   PieceEnd8 e0[PN_VEC_OCCLUDERS], e1[PN_VEC_OCCLUDERS];
   int8 cov[PN_VEC_OCCLUDERS];
   int nc = 0;
-  for (int v = 0; v < cs->na; ++v) {
+  for (int v = 0; v < cs->count; ++v) {
     float8 t0 = 0.0f, t1 = 1.0f;
     int8 id0 = -1, id1 = -1;
-    int8 covers = v == owner ? (int8)(0) : on & cs->act[v];
+    int8 covers = v == owner ? (int8)(0) : on & cs->lanes[v];
     if (pn_any(covers)) {
       if (!cone_ready) {
         cone_ready = true;
@@ -156,17 +158,18 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
         tby = buz * gx - bux * gz;
         tbz = bux * gy - buy * gx;
       }
-      const BoundCone8* k = &cs->cone[v];
-      float8 d = k->ux * gx + k->uy * gy + k->uz * gz;
-      float8 ea = k->ux * aux + k->uy * auy + k->uz * auz;
-      float8 eb = k->ux * bux + k->uy * buy + k->uz * buz;
-      int8 inside_arc = (k->ux * tax + k->uy * tay + k->uz * taz >= 0.0f) &
-                        (k->ux * tbx + k->uy * tby + k->uz * tbz >= 0.0f);
-      int8 misses = (fabs(d) > k->sin_a) | ((ea < k->cos_a) & (eb < k->cos_a) & ~inside_arc);
+      const BoundCone8* cone = &cs->cone[v];
+      float8 d = cone->ux * gx + cone->uy * gy + cone->uz * gz;
+      float8 ea = cone->ux * aux + cone->uy * auy + cone->uz * auz;
+      float8 eb = cone->ux * bux + cone->uy * buy + cone->uz * buz;
+      int8 inside_arc = (cone->ux * tax + cone->uy * tay + cone->uz * taz >= 0.0f) &
+                        (cone->ux * tbx + cone->uy * tby + cone->uz * tbz >= 0.0f);
+      int8 misses =
+          (fabs(d) > cone->sin_a) | ((ea < cone->cos_a) & (eb < cone->cos_a) & ~inside_arc);
       covers &= ~(arc & misses);
     }
-    for (int k = cs->first[v]; k < cs->first[v + 1] && pn_any(covers); ++k) {
-      const EdgePlane8* e = &cs->p[k];
+    for (int k = cs->first_edge[v]; k < cs->first_edge[v + 1] && pn_any(covers); ++k) {
+      const EdgePlane8* e = &cs->plane[k];
       int8 use = covers & e->on;
       if (!pn_any(use)) continue;
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
@@ -176,7 +179,7 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       covers &= clip_interval_id8(f0, f1, use & ~tied, k, &t0, &t1, &id0, &id1);
     }
     if (!pn_any(covers)) continue;
-    crossing_ends8(msx, msy, msz, self, cs->p, PN_VEC_ID_CONTOUR, id0, id1, covers, &e0[nc],
+    crossing_ends8(msx, msy, msz, self, cs->plane, PN_VEC_ID_CONTOUR, id0, id1, covers, &e0[nc],
                    &e1[nc]);
     c0[nc] = t0;
     c1[nc] = t1;
@@ -208,16 +211,16 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
            p1z = edge_point8(az, bz, end);
     const PieceEnd8* start_end = j < 0 ? lo_end : &e1[j];
     turn_to_point8(start_end->x, start_end->y, start_end->z, start_end->set, &p0x, &p0y, &p0z);
-    PieceEnd8 end_end = *hi_end;
+    PieceEnd8 stop = *hi_end;
     for (int w = 0; w < nc; ++w) {
       int8 at = valid & (end_at == w);
       if (!pn_any(at)) continue;
-      end_end.x = select(end_end.x, e0[w].x, at);
-      end_end.y = select(end_end.y, e0[w].y, at);
-      end_end.z = select(end_end.z, e0[w].z, at);
-      end_end.set = select(end_end.set, e0[w].set, at);
+      stop.x = select(stop.x, e0[w].x, at);
+      stop.y = select(stop.y, e0[w].y, at);
+      stop.z = select(stop.z, e0[w].z, at);
+      stop.set = select(stop.set, e0[w].set, at);
     }
-    turn_to_point8(end_end.x, end_end.y, end_end.z, end_end.set, &p1x, &p1y, &p1z);
+    turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
     float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }

@@ -12,33 +12,34 @@
   (PN_MAX_SOURCE_VERTICES + 1 + PN_MAX_CONTACTS + PN_MAX_WEDGES * PN_MAX_WEDGE_FACES)
 
 typedef struct {
-  float3 sv[PN_MAX_SOURCE_POLYGON];
-  float3 sm[PN_MAX_SOURCE_POLYGON]; /* unit side normals of S' */
-  int ns;
+  float3 source[PN_MAX_SOURCE_POLYGON];      /* S', relative to P */
+  float3 source_side[PN_MAX_SOURCE_POLYGON]; /* its unit side normals */
+  int source_count;
   /* The active occluders' contour edges, hole-oriented, relative to P, with their unit side-plane
    * normals along cross(a, b) (zero where P is on the edge's line: no plane), extracted once per
    * point: occluder v owns edges [first_contour[v], first_contour[v + 1]). */
-  float3 ca[PN_MAX_CONTOUR_EDGES], cb[PN_MAX_CONTOUR_EDGES], cm[PN_MAX_CONTOUR_EDGES];
+  float3 contour_a[PN_MAX_CONTOUR_EDGES], contour_b[PN_MAX_CONTOUR_EDGES];
+  float3 contour_side[PN_MAX_CONTOUR_EDGES];
   int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
-  int na;
+  int active_count;
 } PenumbraState;
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
 void clip_source(PenumbraState* st, float3 keep) {
   float3 out[PN_MAX_SOURCE_POLYGON];
   int count = 0;
-  float3 a = st->sv[st->ns - 1];
+  float3 a = st->source[st->source_count - 1];
   float ha = dot(keep, a);
-  for (int i = 0; i < st->ns; ++i) {
-    float3 b = st->sv[i];
+  for (int i = 0; i < st->source_count; ++i) {
+    float3 b = st->source[i];
     float hb = dot(keep, b);
     if ((ha >= 0.0f) != (hb >= 0.0f)) out[count++] = a + (ha / (ha - hb)) * (b - a);
     if (hb >= 0.0f) out[count++] = b;
     a = b;
     ha = hb;
   }
-  for (int i = 0; i < count; ++i) st->sv[i] = out[i];
-  st->ns = count;
+  for (int i = 0; i < count; ++i) st->source[i] = out[i];
+  st->source_count = count;
 }
 
 /* A solid P lies on (no face sees P; P is not its own solid) has no contour line from P: the
@@ -63,8 +64,8 @@ int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
     if (plane_height1(pl, p.x, p.y, p.z) < -eps_length) continue; /* not through P */
     if (count < 0) count = 0;
     bool holds_source = true;
-    for (int i = 0; i < st->ns && holds_source; ++i)
-      holds_source = dot(pl.xyz, st->sv[i]) <= PN_EPS_REL * length(st->sv[i]);
+    for (int i = 0; i < st->source_count && holds_source; ++i)
+      holds_source = dot(pl.xyz, st->source[i]) <= PN_EPS_REL * length(st->source[i]);
     if (holds_source) continue;
     if (count < capacity) limiting[count] = pl.xyz;
     ++count;
@@ -76,8 +77,8 @@ int contact_faces(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
   return count;
 }
 
-/* The plain path's test (kept as the foundation had it): the bounding sphere against the pyramid
- * P + cone(face). */
+/* The plain path's test: the bounding sphere against the pyramid P + cone(face), the whole face
+ * (the plain path has no S' side planes before its occluder pass). */
 inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFace face,
                                    const PnSceneTables* tables) {
   float3 c = o.bound.xyz - p;
@@ -95,20 +96,20 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
   return false;
 }
 
-/* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->sm): its bounding
- * sphere is below the horizon or outside a side plane; or, for a lane that sees the face through
- * an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices are
- * outside a side plane by more than eps_length. */
+/* Whether an occluder misses the pyramid P + cone(S') (S' side normals in st->source_side): its
+ * bounding sphere is below the horizon or outside a side plane; or, for a lane that sees the face
+ * through an aperture (where the occluder's volume is the whole face's, not S''s), all its vertices
+ * are outside a side plane by more than eps_length. */
 bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOccluder o,
                             bool vertices, const PnSceneTables* tables, float eps_length) {
   float3 c = o.bound.xyz - p;
   float r = o.bound.w;
   if (dot(n, c) < -r) return true;
-  for (int i = 0; i < st->ns; ++i)
-    if (dot(st->sm[i], c) > r) return true; /* (a zero normal never passes) */
+  for (int i = 0; i < st->source_count; ++i)
+    if (dot(st->source_side[i], c) > r) return true; /* (a zero normal never passes) */
   if (!vertices) return false;
-  for (int i = 0; i < st->ns; ++i) {
-    float3 m = st->sm[i]; /* a zero normal (no plane) never has the vertices outside */
+  for (int i = 0; i < st->source_count; ++i) {
+    float3 m = st->source_side[i]; /* a zero normal (no plane) never has the vertices outside */
     bool out = true;
     for (int k = 0; k < o.vertexCount && out; ++k)
       out = dot(m, tables->occluderVertices[o.firstVertex + k].xyz - p) > eps_length;
@@ -120,7 +121,7 @@ bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOcclu
 /* The side planes' ids: S' edges first, then the active occluders' contour edges. */
 #define PN_ID_CONTOUR PN_MAX_SOURCE_POLYGON
 inline float3 plane_of(const PenumbraState* st, int id) {
-  return id < PN_ID_CONTOUR ? st->sm[id] : st->cm[id - PN_ID_CONTOUR];
+  return id < PN_ID_CONTOUR ? st->source_side[id] : st->contour_side[id - PN_ID_CONTOUR];
 }
 
 /* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source),
@@ -139,8 +140,8 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
 
   if (owner >= 0) { /* an occluder edge counts only inside S' */
     float t0 = 0.0f, t1 = 1.0f;
-    for (int i = 0; i < st->ns; ++i) {
-      float3 m = st->sm[i];
+    for (int i = 0; i < st->source_count; ++i) {
+      float3 m = st->source_side[i];
       if (no_plane(m)) continue; /* repeated S' vertex: no side plane */
       float f0 = -pn_dot(m, a), f1 = -pn_dot(m, b);
       /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
@@ -152,14 +153,14 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
     hi[0] = t1;
   }
 
-  for (int v = 0; v < st->na; ++v) {
+  for (int v = 0; v < st->active_count; ++v) {
     if (v == owner) continue;
     float t0 = 0.0f, t1 = 1.0f;
     int id0 = PN_ID_VERTEX, id1 = PN_ID_VERTEX;
     bool covers = true;
     for (int e = st->first_contour[v]; e < st->first_contour[v + 1] && covers; ++e) {
-      float3 m = st->cm[e];      /* inside the occluder's cone: m·x > 0 */
-      if (no_plane(m)) continue; /* P on the edge's line */
+      float3 m = st->contour_side[e]; /* inside the occluder's cone: m·x > 0 */
+      if (no_plane(m)) continue;      /* P on the edge's line */
       float f0 = pn_dot(m, a), f1 = pn_dot(m, b);
       if (in_plane1(f0, f1, la, lb)) {
         if (keeps_tied_edge1(1, m_self.x, m_self.y, m_self.z, m.x, m.y, m.z, owner, v))
@@ -221,16 +222,19 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
   }
 }
 
-/* E / (L/2) of the visible part of S' (st->sv) past the active occluders. */
+/* E / (L/2) of the visible part of S' (st->source) past the active occluders. */
 float region_sum(PenumbraState* st, float3 n, int* error) {
-  for (int i = 0; i < st->ns; ++i)
-    st->sm[i] = side_normal(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1]);
+  for (int i = 0; i < st->source_count; ++i)
+    st->source_side[i] =
+        side_normal(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1]);
   PnSum sum = {0.0f, 0.0f};
-  for (int i = 0; i < st->ns; ++i)
-    visible_edge_term(st->sv[i], st->sv[i + 1 == st->ns ? 0 : i + 1], -1, i, n, st, error, &sum);
-  for (int u = 0; u < st->na; ++u)
+  for (int i = 0; i < st->source_count; ++i)
+    visible_edge_term(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1], -1, i, n,
+                      st, error, &sum);
+  for (int u = 0; u < st->active_count; ++u)
     for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
-      visible_edge_term(st->ca[e], st->cb[e], u, PN_ID_CONTOUR + e, n, st, error, &sum);
+      visible_edge_term(st->contour_a[e], st->contour_b[e], u, PN_ID_CONTOUR + e, n, st, error,
+                        &sum);
   return sum.s + sum.c;
 }
 
@@ -241,41 +245,35 @@ float region_sum(PenumbraState* st, float3 n, int* error) {
 float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX_WEDGE_FACES],
                        const int* wedge_faces, int wedges, int* error) {
   float3 base[PN_MAX_SOURCE_POLYGON];
-  const int base_count = st->ns;
-  for (int i = 0; i < base_count; ++i) base[i] = st->sv[i];
+  const int base_count = st->source_count;
+  for (int i = 0; i < base_count; ++i) base[i] = st->source[i];
   int pieces = 1;
   for (int k = 0; k < wedges; ++k) pieces *= wedge_faces[k];
   PnSum sum = {0.0f, 0.0f};
   for (int piece = 0; piece < pieces; ++piece) {
-    st->ns = base_count;
-    for (int i = 0; i < base_count; ++i) st->sv[i] = base[i];
+    st->source_count = base_count;
+    for (int i = 0; i < base_count; ++i) st->source[i] = base[i];
     int code = piece;
-    for (int k = 0; k < wedges && st->ns >= 3; ++k) {
+    for (int k = 0; k < wedges && st->source_count >= 3; ++k) {
       const int chosen = code % wedge_faces[k];
       code /= wedge_faces[k];
-      for (int j = 0; j < chosen && st->ns >= 3; ++j) clip_source(st, -wedge[k][j]);
-      if (st->ns >= 3) clip_source(st, wedge[k][chosen]);
+      for (int j = 0; j < chosen && st->source_count >= 3; ++j) clip_source(st, -wedge[k][j]);
+      if (st->source_count >= 3) clip_source(st, wedge[k][chosen]);
     }
-    if (st->ns >= 3) pn_sum_add(&sum, region_sum(st, n, error));
+    if (st->source_count >= 3) pn_sum_add(&sum, region_sum(st, n, error));
   }
   return sum.s + sum.c;
 }
 
-/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
- * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
-float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
-                    const PnSceneTables* tables, float eps_length, bool aperture,
-                    const float3* corners, int* error) {
-  if (!in_front1(face, p.x, p.y, p.z)) return 0.0f;
-  PenumbraState st;
-
-  /* S': the face (or its visible rectangle) clipped by the horizon plane through P
-   * (Sutherland–Hodgman). */
-  st.ns = 0;
+/* S' for P: the face (or, `aperture`, the visible rectangle in `corners`) clipped by the horizon
+ * plane through P (Sutherland–Hodgman), with its side normals. False where P sees nothing of it. */
+bool source_polygon(PenumbraState* st, float3 p, float3 n, PnSourceFace face,
+                    const PnSceneTables* tables, bool aperture, const float3* corners) {
+  st->source_count = 0;
   if (aperture) {
-    for (int i = 0; i < 4; ++i) st.sv[i] = corners[i];
-    st.ns = 4;
-    clip_source(&st, n);
+    for (int i = 0; i < 4; ++i) st->source[i] = corners[i];
+    st->source_count = 4;
+    clip_source(st, n);
   } else {
     const int m = face.vertexCount;
     float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
@@ -283,28 +281,63 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
     for (int i = 0; i < m; ++i) {
       float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
       float hb = dot(n, b);
-      if (ha >= 0.0f) st.sv[st.ns++] = a;
-      if ((ha >= 0.0f) != (hb >= 0.0f)) st.sv[st.ns++] = a + (ha / (ha - hb)) * (b - a);
+      if (ha >= 0.0f) st->source[st->source_count++] = a;
+      if ((ha >= 0.0f) != (hb >= 0.0f))
+        st->source[st->source_count++] = a + (ha / (ha - hb)) * (b - a);
       a = b;
       ha = hb;
     }
   }
-  if (st.ns < 3) return 0.0f;
+  if (st->source_count < 3) return false;
   /* A face seen edge-on (every vertex of S' within the tolerance of the horizon, e.g. a source
    * corner exactly in P's tangent plane) gives nothing: its E is below PN_EPS_REL · π·L, and the
    * side planes of such a sliver have no direction, so occluder edges would be taken as inside it
-   * and integrated as holes (found by the stress suite: E = -11 lx, bench/degenerate_stress). */
+   * and integrated as holes (bench/degenerate_stress has such points: E = -11 lx without this). */
   float rise = 0.0f;
-  for (int i = 0; i < st.ns; ++i) rise = fmax(rise, dot(n, st.sv[i]) / length(st.sv[i]));
-  if (rise <= PN_EPS_REL) return 0.0f;
+  for (int i = 0; i < st->source_count; ++i)
+    rise = fmax(rise, dot(n, st->source[i]) / length(st->source[i]));
+  if (rise <= PN_EPS_REL) return false;
 
-  for (int i = 0; i < st.ns; ++i)
-    st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+  for (int i = 0; i < st->source_count; ++i)
+    st->source_side[i] =
+        side_normal(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1]);
+  return true;
+}
+
+/* Adds occluder o, active at P, with its contour edges. */
+void add_contour(PenumbraState* st, PnOccluder o, float3 p, const PnSceneTables* tables,
+                 float eps_length, int* error) {
+  int c = st->first_contour[st->active_count];
+  for (int e = 0; e < o.edgeCount; ++e) {
+    float3 ea, eb;
+    if (!contour_edge(e, o, p, tables, eps_length, &ea, &eb)) continue;
+    if (c == PN_MAX_CONTOUR_EDGES) {
+      *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
+      break;
+    }
+    st->contour_a[c] = ea;
+    st->contour_b[c] = eb;
+    st->contour_side[c] = side_normal(ea, eb);
+    ++c;
+  }
+  ++st->active_count;
+  st->first_contour[st->active_count] = c;
+}
+
+/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
+ * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
+float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
+                    const PnSceneTables* tables, float eps_length, bool aperture,
+                    const float3* corners, int* error) {
+  PenumbraState st;
+  if (!in_front1(face, p.x, p.y, p.z) ||
+      !source_polygon(&st, p, n, face, tables, aperture, corners))
+    return 0.0f;
 
   /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
    * P is outside their penumbra volume or they miss the pyramid to S'); those with none are
    * solids P lies on. */
-  st.na = 0;
+  st.active_count = 0;
   st.first_contour[0] = 0;
   int contacts = 0;
   float3 wedge[PN_MAX_WEDGES][PN_MAX_WEDGE_FACES];
@@ -338,33 +371,20 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
       /* One face, exactly; or (more wedges or faces than the pieces hold: P at a vertex where
        * many facets meet, a set of measure zero) the face most opposed to P's normal alone. */
       clip_source(&st, m == 1 ? limiting[0] : opposed);
-      if (st.ns < 3) return 0.0f;
-      for (int i = 0; i < st.ns; ++i)
-        st.sm[i] = side_normal(st.sv[i], st.sv[i + 1 == st.ns ? 0 : i + 1]);
+      if (st.source_count < 3) return 0.0f;
+      for (int i = 0; i < st.source_count; ++i)
+        st.source_side[i] =
+            side_normal(st.source[i], st.source[i + 1 == st.source_count ? 0 : i + 1]);
       continue;
     }
     if (culling ? outside_source_pyramid(&st, p, n, o, aperture, tables, eps_length)
                 : sphere_outside_pyramid(p, n, o, face, tables))
       continue;
-    if (st.na == PN_MAX_ACTIVE_OCCLUDERS) {
+    if (st.active_count == PN_MAX_ACTIVE_OCCLUDERS) {
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
     }
-    int c = st.first_contour[st.na];
-    for (int e = 0; e < o.edgeCount; ++e) {
-      float3 ea, eb;
-      if (!contour_edge(e, o, p, tables, eps_length, &ea, &eb)) continue;
-      if (c == PN_MAX_CONTOUR_EDGES) {
-        *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
-        break;
-      }
-      st.ca[c] = ea;
-      st.cb[c] = eb;
-      st.cm[c] = side_normal(ea, eb);
-      ++c;
-    }
-    ++st.na;
-    st.first_contour[st.na] = c;
+    add_contour(&st, o, p, tables, eps_length, error);
   }
 
   const float sum = wedges == 0 ? region_sum(&st, n, error)

@@ -6,7 +6,7 @@
 // here: a visible contour assembled from crossing points that each edge computes for itself errs by
 // up to 2.0e-3 (eight lanes) and 1.3e-3 (scalar) of this panel's light, because a gap of δ rad in a
 // contour costs about L·δ however small the source looks; the kernel gives both edges one crossing
-// direction (kernels/illuminance.cl, crossing_point). Every path is held to 1e-4 of the panel's
+// direction (kernels/contour.cl, crossing_direction). Every path is held to 1e-4 of the panel's
 // unoccluded value, twice the float rounding of the unoccluded formula itself at these points
 // (5.4e-5 measured: the terms of a source 10 m away cancel to 1/175 of their size). Measured:
 // 4.6e-5 eight lanes, 4.5e-5 scalar, 7.1e-5 plain.
