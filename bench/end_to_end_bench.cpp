@@ -14,7 +14,9 @@
 // sparse one (120 × 80 points) of the same scene, which leaves out every fixed cost. Each of R
 // repeats prints its runs; the last line of a scene takes the least wall time of each kind.
 // PoCL is pinned to two threads (POCL_MAX_PTHREAD_COUNT=2) unless the environment says otherwise.
-//   usage: end_to_end_bench [--device cpu|gpu|<index>] [--repeat R] [--keep DIR]
+//   usage: end_to_end_bench [--device cpu|gpu|<index>] [--repeat R] [--keep DIR] [--binary PATH]
+// --binary runs another build of penumbra (an older one, to compare); the kernel alone is always
+// this build's.
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -43,6 +45,8 @@ namespace {
 
 namespace fs = std::filesystem;
 using namespace penumbra;
+
+std::string binary = PENUMBRA_BINARY;  // --binary
 
 constexpr double kLength = 12.0, kWidth = 8.0, kHeight = 3.0;  // interior, m
 
@@ -108,7 +112,7 @@ double seconds(const timeval& t) {
 // Runs `penumbra grid scene -o output --quiet` and reads its summary.json.
 Run runBinary(const fs::path& scene, const fs::path& output, const std::string& device) {
   fs::remove_all(output);
-  std::vector<std::string> arguments = {PENUMBRA_BINARY, "grid",    scene.string(), "-o",
+  std::vector<std::string> arguments = {binary,          "grid",    scene.string(), "-o",
                                         output.string(), "--quiet", "--device",     device};
   std::vector<char*> argv;
   for (std::string& a : arguments) argv.push_back(a.data());
@@ -121,8 +125,8 @@ Run runBinary(const fs::path& scene, const fs::path& output, const std::string& 
   Run run;
   run.wall = secondsOf([&] {
     pid_t pid = -1;
-    if (posix_spawn(&pid, PENUMBRA_BINARY, &actions, nullptr, argv.data(), environ) != 0)
-      throw std::runtime_error("cannot start " PENUMBRA_BINARY);
+    if (posix_spawn(&pid, binary.c_str(), &actions, nullptr, argv.data(), environ) != 0)
+      throw std::runtime_error("cannot start " + binary);
     wait4(pid, &status, 0, &usage);
   });
   posix_spawn_file_actions_destroy(&actions);
@@ -219,6 +223,8 @@ int main(int argc, char** argv) {
       repeat = std::max(1, std::atoi(argv[i + 1]));
     else if (!std::strcmp(argv[i], "--keep"))
       keep = argv[i + 1];
+    else if (!std::strcmp(argv[i], "--binary"))
+      binary = argv[i + 1];
   }
   setenv("POCL_MAX_PTHREAD_COUNT", "2", 0);
   const fs::path directory =
