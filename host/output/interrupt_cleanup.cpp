@@ -42,10 +42,11 @@ sigset_t interruptSignals() {
     // Taken and kept: no commit can start after this point, one in progress is finished.
     registryMutex().lock();
     // The writers go on while this runs: a file created in the staging directory after
-    // remove_all listed it makes the directory's own removal fail ("not empty"), and the run
-    // used to end with the staging directory left (Interrupt tests, about one run in a hundred
-    // under load). Once the directory is gone no writer can recreate it (only StagedDirectory's
-    // constructor creates it, after registering, which this lock blocks), so a few passes do.
+    // remove_all listed it makes the directory's own removal fail ("not empty"); one pass alone
+    // leaves the staging directory behind in about one run in a hundred under load (the Interrupt
+    // tests under ctest -j4). Once the directory is gone no writer can recreate it (only
+    // StagedDirectory's constructor creates it, after registering, which this lock blocks), so a
+    // few passes do.
     std::error_code ec;
     for (const auto& staging : registry())
       for (int pass = 0; pass < 100 && std::filesystem::exists(staging, ec); ++pass)

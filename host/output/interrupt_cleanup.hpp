@@ -1,6 +1,6 @@
 #pragma once
 // A run stopped by SIGINT (Ctrl-C) or SIGTERM (a cluster's time limit, `kill`) leaves no staging
-// directory behind (issue 10). Final names are safe without this (StagedDirectory renames only
+// directory behind. Final names are safe without this (StagedDirectory renames only
 // complete files into place); this removes the hidden `.partial-<pid>` leftovers too.
 //
 // Cleaning up inside a signal handler is not allowed (no allocation, no locks, no filesystem
