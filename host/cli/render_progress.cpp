@@ -1,4 +1,5 @@
 #include "cli/render_progress.hpp"
+#include "timing/seconds_since.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -37,8 +38,7 @@ void RenderProgress::update(double fraction) {
 void RenderProgress::finish() {
   if (!enabled_) return;
   if (terminal_ && shown_) fmt::print(stderr, "\r\033[K");
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = secondsSince(start_);
   fmt::print(stderr, "penumbra: view {}: done in {:.2f} s\n", view_, elapsed);
 }
 

@@ -1,4 +1,5 @@
 #include "cli/sweep_progress.hpp"
+#include "timing/seconds_since.hpp"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -43,8 +44,7 @@ void SweepProgress::planned(std::size_t toCompute, std::size_t finished) {
 }
 
 double SweepProgress::etaSeconds() const {
-  const double elapsed =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  const double elapsed = secondsSince(start_);
   return done_ > 0 ? elapsed / static_cast<double>(done_) * static_cast<double>(total_ - done_)
                    : 0.0;
 }
