@@ -54,21 +54,12 @@ Scene withoutSolids(Scene scene) {
 // E_unoccluded is the scale because it is the size of the terms the kernel sums in float: a
 // heavily shaded point's E is a small difference of such terms.
 //
-<<<<<<< HEAD
 // Each path errs by its float rounding, and the two differ by the sum of both. They meet 1e-6 on
 // the example scenes because every sum of contour terms and of faces is compensated
-// (kernels/illuminance.cl, PnSum) and positions are relative to the scene's centre
+// (kernels/prelude.cl, PnSum) and positions are relative to the scene's centre
 // (engine/kernel_scene.hpp). Measured (defaults): office 4.0e-7, open office 8.3e-7, CIE 171
 // cases 1.2e-7. `culling` alone (apertures off, the scalar penumbra path: the plain path's
 // arithmetic) is held the same way: 7.6e-7 on the open office.
-=======
-// Each path errs by its float rounding, and the two differ by the sum of both. Held to 1e-6 on
-// the example scenes since every sum of contour terms and of faces is compensated
-// (kernels/prelude.cl, PnSum) and positions are relative to the scene's centre
-// (lighting/kernel_scene.hpp). Measured (defaults): office 4.0e-7, open office 8.3e-7, CIE 171
-// cases 1.2e-7; before, 4.5e-7, 1.25e-6 and 1.7e-7. `culling` alone (apertures off, the scalar
-// penumbra path: the plain path's arithmetic) is held the same way: 7.6e-7 on the open office.
->>>>>>> wt-kernel
 //
 // Both paths are also held against the exact reference in double (reference/exact_illuminance):
 // to kKernelRelative of E_unoccluded at every point. Measured: 1.2e-6 on the open office, 4.4e-6
