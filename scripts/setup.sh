@@ -106,13 +106,9 @@ sanitize_tests() {
     [[ "$(basename "${source}")" == viz_* ]] || targets+=("$(basename "${source}" .cpp)")
   done
   sanitize_build "${targets[@]}"
-  # A leak, an invalid access or undefined behaviour fails the test that shows it. A failed test
-  # runs once more: LeakSanitizer's own thread tracer can crash at exit while PoCL's worker
-  # threads wind down ("Tracer caught signal 11 ... LeakSanitizer has encountered a fatal error",
-  # google/sanitizers#1353; seen once in 323 tests after the test itself had passed). These tests
-  # are deterministic, so a real leak, invalid access or undefined behaviour fails both runs.
+  # A leak, an invalid access or undefined behaviour fails the test that shows it.
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --test-dir "${ROOT}/build-sanitize" --output-on-failure -j2 --repeat until-pass:2
+    ctest --test-dir "${ROOT}/build-sanitize" --output-on-failure -j2
 }
 
 step="${1:-}"
