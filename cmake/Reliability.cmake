@@ -24,4 +24,7 @@ if(PENUMBRA_SANITIZE)
   add_compile_options(-fsanitize=${PENUMBRA_SANITIZE} -fno-sanitize-recover=all
                       -fno-omit-frame-pointer -g)
   add_link_options(-fsanitize=${PENUMBRA_SANITIZE})
+  # Every program that links the host library (penumbra, the tests, the fuzzers, the benches)
+  # starts with the sanitizer options of tests/sanitizer_defaults.cpp.
+  set(PENUMBRA_SANITIZER_DEFAULTS ${CMAKE_SOURCE_DIR}/tests/sanitizer_defaults.cpp)
 endif()
