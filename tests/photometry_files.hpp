@@ -116,12 +116,9 @@ inline std::string ldtText(const LdtSpec& s) {
   for (double h : s.areaHeights) out += exact(h) + "\n";
   out += fmt::format("100\n{}\n{}\n0\n", exact(s.lorPercent), exact(s.conversion));
   out += fmt::format("{}\n", s.lampSets.size());
-  for (const auto& l : s.lampSets) out += fmt::format("{}\n", l.count);
-  for (std::size_t i = 0; i < s.lampSets.size(); ++i) out += "LED\n";
-  for (const auto& l : s.lampSets) out += exact(l.lumens) + "\n";
-  for (std::size_t i = 0; i < s.lampSets.size(); ++i) out += "3000 K\n";
-  for (std::size_t i = 0; i < s.lampSets.size(); ++i) out += "80\n";
-  for (const auto& l : s.lampSets) out += exact(l.watts) + "\n";
+  for (const auto& l : s.lampSets) {
+    out += fmt::format("{}\nLED\n{}\n3000 K\n80\n{}\n", l.count, exact(l.lumens), exact(l.watts));
+  }
   for (int i = 0; i < 10; ++i) out += "0.5\n";
   for (double a : c) out += exact(a) + "\n";
   for (double a : g) out += exact(a) + "\n";

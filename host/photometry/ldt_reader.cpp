@@ -134,33 +134,30 @@ void expectPlaneAt(const NumberedValues& c, int index, double expected, int isym
   }
 }
 
+// The lamp sets: n, then per set its six lines (26a-26f of the EULUMDAT specification): number
+// of lamps, type, total flux (lm), colour temperature, colour rendering, wattage (W).
 void readLampSets(LdtLines& in, PhotometricData& data) {
   const int sets = in.integer("number of lamp sets", 1, kMaxLdtLampSets, "at most 100");
   data.lamps.resize(static_cast<std::size_t>(sets));
   for (int i = 0; i < sets; ++i) {
-    const std::string field = fmt::format("number of lamps (set {})", i + 1);
     LampSet& set = data.lamps[static_cast<std::size_t>(i)];
-    set.count = in.integer(field, -100000, 100000);
-    if (set.count == 0) throw PhotometricError(in.file(), in.line(), field, "must not be 0");
+    const auto field = [i](const char* name) { return fmt::format("{} (set {})", name, i + 1); };
+    set.count = in.integer(field("number of lamps"), -100000, 100000);
+    if (set.count == 0) {
+      throw PhotometricError(in.file(), in.line(), field("number of lamps"), "must not be 0");
+    }
     if (set.count < 0) data.absolutePhotometry = true;
-  }
-  for (auto& set : data.lamps) set.type = in.text("lamp type");
-  for (int i = 0; i < sets; ++i) {
-    const std::string field = fmt::format("lamp luminous flux (set {})", i + 1);
-    LampSet& set = data.lamps[static_cast<std::size_t>(i)];
-    set.lumens = in.number(field);
+    set.type = in.text(field("lamp type"));
+    set.lumens = in.number(field("lamp luminous flux"));
     if (!(set.lumens > 0)) {
-      throw PhotometricError(in.file(), in.line(), field,
+      throw PhotometricError(in.file(), in.line(), field("lamp luminous flux"),
                              fmt::format("{} lm: expected a positive flux", set.lumens));
     }
     data.lampLumens += set.lumens;
-  }
-  for (auto& set : data.lamps) set.colour = in.text("colour temperature");
-  for (auto& set : data.lamps) set.renderingIndex = in.text("colour rendering index");
-  for (int i = 0; i < sets; ++i) {
-    data.lamps[static_cast<std::size_t>(i)].watts =
-        in.within(fmt::format("wattage (set {})", i + 1), 0, 1e7, "W");
-    data.inputWatts += data.lamps[static_cast<std::size_t>(i)].watts;
+    set.colour = in.text(field("colour temperature"));
+    set.renderingIndex = in.text(field("colour rendering index"));
+    set.watts = in.within(field("wattage"), 0, 1e7, "W");
+    data.inputWatts += set.watts;
   }
 }
 
