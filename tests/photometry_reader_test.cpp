@@ -56,6 +56,8 @@ TEST(IesReader, ReadsTheVersionKeywordsAndTable) {
   const PhotometricData v2019 = parseIes(testfiles::iesText(spec), "b.ies");
   EXPECT_EQ(v2019.version, "LM-63-2019");
   EXPECT_DOUBLE_EQ(*v2019.lightOutputRatio, 0.825);
+  // A UTF-8 byte order mark before the version line.
+  EXPECT_EQ(parseIes("\xEF\xBB\xBF" + testfiles::iesText(spec), "bom.ies").version, "LM-63-2019");
   spec.versionLine = "IESNA91";
   EXPECT_EQ(parseIes(testfiles::iesText(spec), "c.ies").version, "LM-63-1991");
   // LM-63-1986: no version line, free label lines.
@@ -115,6 +117,8 @@ TEST(IesReader, FeetBecomeMetresAndSignsGiveTheShape) {
       {0, 0, 0, OpeningShape::Point},
       {0.6, 0.3, 0.1, OpeningShape::RectangleWithLuminousSides},
       {-0.2, -0.2, 0, OpeningShape::Disk},
+      {-0.2, 0, 0, OpeningShape::Disk},
+      {-0.2, 0, 0.1, OpeningShape::VerticalCylinder},
       {-0.2, -0.3, 0, OpeningShape::Ellipse},
       {-0.2, -0.2, 0.4, OpeningShape::VerticalCylinder},
       {-0.2, -0.2, -0.2, OpeningShape::Sphere},
@@ -131,7 +135,8 @@ TEST(IesReader, FeetBecomeMetresAndSignsGiveTheShape) {
     const PhotometricData data = parseIes(testfiles::iesText(spec), "shape.ies");
     EXPECT_EQ(data.opening.shape, c.shape) << c.w << " " << c.l << " " << c.h;
     EXPECT_EQ(data.opening.widthM, std::abs(c.w));
-    EXPECT_EQ(data.opening.lengthM, std::abs(c.l));
+    // A round opening given by its width alone has that diameter along C0-C180 too.
+    EXPECT_EQ(data.opening.lengthM, c.l == 0 && c.h >= 0 ? std::abs(c.w) : std::abs(c.l));
     EXPECT_EQ(data.opening.heightM, std::abs(c.h));
     EXPECT_TRUE(data.warnings.empty());
   }
@@ -274,6 +279,7 @@ TEST(LdtReader, AreasAbsolutePhotometryAndDecimalCommas) {
   text.replace(at, 5, "\n0,5\n");
   text.replace(text.find("\n300\n"), 5, "\n300,0\n");
   EXPECT_EQ(parseLdt(text, "comma.ldt").candela, disk.candela);
+  EXPECT_EQ(parseLdt("\xEF\xBB\xBF" + text, "bom.ldt").candela, disk.candela);
   spec.areaHeights[1] = 40;
   spec.areaWidth = 100;
   const PhotometricData box = parseLdt(testfiles::ldtText(spec), "box.ldt");

@@ -162,6 +162,7 @@ void readLightOutputRatio(const std::filesystem::path& file, PhotometricData& da
 }  // namespace
 
 PhotometricData parseIes(std::string_view text, const std::filesystem::path& file) {
+  text = withoutByteOrderMark(text);
   PhotometricData data;
   data.format = PhotometricFormat::Ies;
   const std::vector<std::string_view> lines = splitLines(text);
@@ -257,7 +258,11 @@ PhotometricData parseIes(std::string_view text, const std::filesystem::path& fil
   data.horizontalAnglesDeg = horizontal.values;
 
   const double factor = multiplier * ballastFactor * (oldFactor ? third : 1.0);
-  data.candela.reserve(static_cast<std::size_t>(nVertical) * static_cast<std::size_t>(nHorizontal));
+  // Each value takes two characters at least: a file cannot hold more than that, whatever its
+  // counts declare.
+  data.candela.reserve(
+      std::min(static_cast<std::size_t>(nVertical) * static_cast<std::size_t>(nHorizontal),
+               text.size() / 2 + 1));
   for (int h = 0; h < nHorizontal; ++h) {
     const std::string field = fmt::format("candela values (horizontal angle {}°)",
                                           horizontal.values[static_cast<std::size_t>(h)]);

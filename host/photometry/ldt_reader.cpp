@@ -164,6 +164,7 @@ void readLampSets(LdtLines& in, PhotometricData& data) {
 }  // namespace
 
 PhotometricData parseLdt(std::string_view text, const std::filesystem::path& file) {
+  text = withoutByteOrderMark(text);
   if (trim(text).empty()) throw PhotometricError(file, 1, "EULUMDAT file", "the file is empty");
   PhotometricData data;
   data.format = PhotometricFormat::Eulumdat;

@@ -34,6 +34,10 @@ std::optional<LuminousOpening> openingFromIes(const SignedOpening& dimensions,
     opening.shape = S::Rectangle;
   } else if (sw > 0 && sl > 0 && sh > 0) {
     opening.shape = S::RectangleWithLuminousSides;
+  } else if (sw < 0 && sl == 0 && sh >= 0) {
+    // LM-63-1995 files give a round opening by its diameter as a negative width alone.
+    opening.lengthM = w;
+    opening.shape = sh == 0 ? S::Disk : S::VerticalCylinder;
   } else if (sw < 0 && sl < 0 && sh == 0) {
     opening.shape = same(w, l) ? S::Disk : S::Ellipse;
   } else if (sw < 0 && sl < 0 && sh > 0) {

@@ -28,6 +28,11 @@ std::string readPhotometricText(const std::filesystem::path& file) {
   return text;
 }
 
+std::string_view withoutByteOrderMark(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  return text;
+}
+
 std::vector<std::string_view> splitLines(std::string_view text) {
   std::vector<std::string_view> lines;
   std::size_t start = 0;

@@ -18,6 +18,9 @@ inline constexpr std::size_t kMaxPhotometricFileBytes = std::size_t{64} << 20;
 // kMaxPhotometricFileBytes.
 std::string readPhotometricText(const std::filesystem::path& file);
 
+// `text` without a leading UTF-8 byte order mark (some editors write one).
+std::string_view withoutByteOrderMark(std::string_view text);
+
 // The lines of `text` without their ends (LF, CRLF or a lone CR).
 std::vector<std::string_view> splitLines(std::string_view text);
 
