@@ -123,6 +123,8 @@ TEST(PhotometricErrors, MalformedIesFiles) {
        "negative value -60 at vertical angle 45°"},
       {"nan candela", withLine(kIes, 9, "100 nan 0"), 9, "candela values", "found 'nan'"},
       {"huge candela", withLine(kIes, 9, "100 1e400 0"), 9, "candela values", "found '1e400'"},
+      {"candela above 10^12 cd", withLine(kIes, 5, "1 1000 2e10 3 2 1 2 0 0 0"), 9,
+       "candela values (horizontal angle 0°)", "cd at vertical angle 0°: above 10^12 cd"},
       {"extra values", kIes + "5 5\n", 11, "candela values", "2 more values"},
       {"bad [_LOR]", withLine(kIes, 3, "[_LOR] most"), 3, "[_LOR]", "in %"},
   };
@@ -154,6 +156,8 @@ TEST(PhotometricErrors, MalformedEulumdatFiles) {
        "expected 3 values, found 2 (the file ends)"},
       {"negative intensity", withLine(kLdt, 48, "-70"), 48, "luminous intensities",
        "negative value -70 at γ 45°"},
+      {"lamp flux 1e300", withLine(kLdt, 29, "1e300"), 47, "luminous intensities (C 0°)",
+       "above 10^12 cd"},
       {"extra lines", kLdt + "\n12\n", 51, "luminous intensities", "counts do not match"},
   };
   for (const BadFile& bad : cases) expectOneError(bad, parseLdt, "bad.ldt");

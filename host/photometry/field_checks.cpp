@@ -35,14 +35,22 @@ int wholeNumber(double value, int min, int max, const std::string& meaning,
   return static_cast<int>(value);
 }
 
-void checkIntensity(double value, int line, const std::filesystem::path& file,
-                    const std::string& field, const std::string& where) {
+double candelaOf(double value, double factor, int line, const std::filesystem::path& file,
+                 const std::string& field, const std::string& where) {
   if (!std::isfinite(value)) {
     throw PhotometricError(file, line, field, fmt::format("not a finite number at {}", where));
   }
   if (value < 0) {
     throw PhotometricError(file, line, field, fmt::format("negative value {} at {}", value, where));
   }
+  const double cd = value * factor;
+  if (!(cd <= kMaxCandela)) {
+    throw PhotometricError(file, line, field,
+                           fmt::format("{} x {} = {} cd at {}: above 10^12 cd, no luminaire's "
+                                       "intensity",
+                                       value, factor, cd, where));
+  }
+  return cd;
 }
 
 }  // namespace penumbra::photometry

@@ -23,9 +23,14 @@ void checkAngles(const NumberedValues& angles, const std::filesystem::path& file
 int wholeNumber(double value, int min, int max, const std::string& meaning,
                 const std::filesystem::path& file, int line, const std::string& field);
 
-// A table value: candela (or cd/klm) must be finite and not negative. `where` names the angles,
-// e.g. "C 45°, γ 10°".
-void checkIntensity(double value, int line, const std::filesystem::path& file,
-                    const std::string& field, const std::string& where);
+// The largest intensity read (cd): far above any luminaire (a searchlight reaches 10^9 cd), low
+// enough that every sum over a table stays finite.
+inline constexpr double kMaxCandela = 1e12;
+
+// A table value in cd: `value` as the file gives it (cd, or cd/klm) must be finite and not
+// negative, and `value` x `factor` (the multipliers, or the lamps' klm) at most kMaxCandela.
+// `where` names the angles, e.g. "vertical angle 10°".
+double candelaOf(double value, double factor, int line, const std::filesystem::path& file,
+                 const std::string& field, const std::string& where);
 
 }  // namespace penumbra::photometry

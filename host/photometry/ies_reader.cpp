@@ -104,8 +104,8 @@ void readTilt(IesNumberStream& numbers, PhotometricData& data) {
   const NumberedValues factors =
       numbers.values("tilt multiplying factors", static_cast<std::size_t>(count));
   for (std::size_t i = 0; i < factors.values.size(); ++i) {
-    checkIntensity(factors.values[i], factors.lines[i], numbers.file(), "tilt multiplying factors",
-                   fmt::format("tilt angle {}°", angles.values[i]));
+    candelaOf(factors.values[i], 1, factors.lines[i], numbers.file(), "tilt multiplying factors",
+              fmt::format("tilt angle {}°", angles.values[i]));
   }
   tilt.anglesDeg = angles.values;
   tilt.factors = factors.values;
@@ -269,13 +269,7 @@ PhotometricData parseIes(std::string_view text, const std::filesystem::path& fil
     const NumberedValues row = numbers.values(field, static_cast<std::size_t>(nVertical));
     for (std::size_t v = 0; v < row.values.size(); ++v) {
       const std::string where = fmt::format("vertical angle {}°", vertical.values[v]);
-      checkIntensity(row.values[v], row.lines[v], file, field, where);
-      const double cd = row.values[v] * factor;
-      if (!std::isfinite(cd)) {
-        throw PhotometricError(file, row.lines[v], field,
-                               fmt::format("{} times the multipliers ({}) overflows at {}",
-                                           row.values[v], factor, where));
-      }
+      const double cd = candelaOf(row.values[v], factor, row.lines[v], file, field, where);
       data.candela.push_back(cd);
     }
   }

@@ -246,12 +246,8 @@ PhotometricData parseLdt(std::string_view text, const std::filesystem::path& fil
         fmt::format("luminous intensities (C {}°)", c.values[static_cast<std::size_t>(p)]);
     const NumberedValues row = in.numbers(field, static_cast<std::size_t>(ng));
     for (std::size_t v = 0; v < row.values.size(); ++v) {
-      checkIntensity(row.values[v], row.lines[v], file, field,
-                     fmt::format("γ {}° (cd/klm)", g.values[v]));
-      const double cd = row.values[v] * cdPerValue;
-      if (!std::isfinite(cd)) {
-        throw PhotometricError(file, row.lines[v], field, "overflows when converted to cd");
-      }
+      const double cd = candelaOf(row.values[v], cdPerValue, row.lines[v], file, field,
+                                  fmt::format("γ {}° (cd/klm)", g.values[v]));
       data.candela.push_back(cd);
     }
   }
