@@ -25,7 +25,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kI0 = 1000;  // cd
 
 // An IES type C file of `intensity` with horizontal angles `h` (a symmetry), γ every 5°.
-LightDistribution iesDistribution(const std::vector<double>& h, const testfiles::Intensity& intensity,
+LightDistribution iesDistribution(const std::vector<double>& h,
+                                  const testfiles::Intensity& intensity,
                                   std::string version = "IESNA:LM-63-2002") {
   IesSpec spec;
   spec.versionLine = version;
@@ -198,8 +199,8 @@ TEST(ZonalFlux, UniformSphereIsFourPiI0) {
   spec.vertical = {0, 3, 10, 45, 90, 100, 170, 180};
   spec.horizontal = {0, 30, 90};
   spec.candela = [](double, double) { return 10.0; };
-  EXPECT_NEAR(zonalFlux(LightDistribution(parseIes(testfiles::iesText(spec), "u.ies"))), 4 * kPi * 10,
-              1e-12);
+  EXPECT_NEAR(zonalFlux(LightDistribution(parseIes(testfiles::iesText(spec), "u.ies"))),
+              4 * kPi * 10, 1e-12);
 }
 
 TEST(PhotometricFrame, TypeCAxes) {
