@@ -93,7 +93,7 @@ sanitize_build() {
 
 # Each fuzz target for a while: a minute in all. Part of `test`, so part of CI.
 fuzz_tests() {
-  sanitize_build scene_fuzz pts_fuzz study_fuzz
+  sanitize_build scene_fuzz pts_fuzz study_fuzz ies_fuzz ldt_fuzz
   bash "${ROOT}/tests/fuzz/run.sh" 60 "${ROOT}/build-sanitize"
 }
 

@@ -17,6 +17,7 @@ inline constexpr const char* kProgramFooter =
     "                                                  every case of a parameter study, one table\n"
     "  penumbra plot out/office                        heat maps, isolux lines, room surfaces\n"
     "  penumbra devices                                the OpenCL devices --device can name\n"
+    "  penumbra luminaire data/luminaires/batwing.ldt  what a photometric file (.ies, .ldt) holds\n"
     "  penumbra grid --help                            the outputs and their units";
 
 inline constexpr const char* kGrid =
@@ -110,6 +111,34 @@ inline constexpr const char* kMergeFooter =
 
 inline constexpr const char* kDevices =
     "List the OpenCL devices: index (what --device takes), type, name, platform, compute units.";
+
+inline constexpr const char* kLuminaire =
+    "Show what a photometric file (IES LM-63 .ies or EULUMDAT .ldt) holds, as penumbra reads it: "
+    "format, photometric type, symmetry, lamps, light output ratio, luminous opening, peak "
+    "intensity, and the flux of its table against the flux the file states.";
+
+inline constexpr const char* kLuminaireFooter =
+    "What the lines mean (docs/photometry.md):\n"
+    "  photometric type  C: planes C about the vertical axis, gamma from the nadir (0) to the\n"
+    "                    zenith (180); B and A: floodlight and automotive systems (H, V)\n"
+    "  symmetry          which planes the file stores; the rest of the sphere is mirrored\n"
+    "  lamps             lamp flux (lm) the relative table is scaled to; EULUMDAT tables are\n"
+    "                    in cd/klm and are converted to cd with it\n"
+    "  LOR               light output ratio: luminaire flux / lamp flux (EULUMDAT LORL; IES\n"
+    "                    files state it with the keyword [_LOR], in %)\n"
+    "  opening           the luminous area in metres (IES feet converted), along C0-C180\n"
+    "                    (length), C90-C270 (width) and the vertical (height)\n"
+    "  peak intensity    the largest value of the table (cd) and its angles\n"
+    "  flux of the table the luminous flux (lm) of the table by the zonal method; it should\n"
+    "                    equal lamp lumens x LOR within 0.1 %: more means a coarse or\n"
+    "                    inconsistent table\n"
+    "\n"
+    "Examples:\n"
+    "  penumbra luminaire data/luminaires/narrow-downlight.ies\n"
+    "  penumbra luminaire data/luminaires/batwing.ldt\n"
+    "\n"
+    "Exit status: 0 read; 1 the file cannot be read or has an unknown extension; 2 malformed,\n"
+    "reported as file:line: field: message.";
 
 inline constexpr const char* kRender =
     "Render the scene's views: luminance images (cd/m²) with exact direct illuminance at every "

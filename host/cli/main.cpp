@@ -4,6 +4,7 @@
 #include "cli/devices_command.hpp"
 #include "cli/grid_command.hpp"
 #include "cli/help_text.hpp"
+#include "cli/luminaire_options.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/render_command.hpp"
 #include "cli/render_options.hpp"
@@ -84,6 +85,9 @@ int main(int argc, char** argv) {
 
   CLI::App* devicesCommand = app.add_subcommand("devices", penumbra::help::kDevices);
 
+  penumbra::LuminaireOptions luminaire;
+  CLI::App* luminaireCommand = penumbra::cli::addLuminaireCommand(app, luminaire);
+
   penumbra::viz::PlotOptions plot;
   CLI::App* plotCommand = penumbra::viz::addPlotCommand(app, plot);
 
@@ -121,5 +125,6 @@ int main(int argc, char** argv) {
   if (*mergeCommand) return penumbra::runMergeCommand(merge);
   if (*toneMapCommand) return penumbra::runToneMapCommand(toneMap);
   if (*devicesCommand) return penumbra::runDevicesCommand();
+  if (*luminaireCommand) return penumbra::runLuminaireCommand(luminaire);
   return 1;
 }

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Runs the libFuzzer targets (docs/reliability.md):
 #   tests/fuzz/run.sh SECONDS [BUILD_DIR]
-# SECONDS are shared out between the three targets. BUILD_DIR (default build-sanitize) is configured
+# SECONDS are shared out between the targets. BUILD_DIR (default build-sanitize) is configured
 # with CC=clang-14 CXX=clang++-14 -DPENUMBRA_FUZZ=ON and the targets built. First every saved
 # regression input is replayed, then each target fuzzes a corpus seeded from data/, studies/,
-# the scene files the tests write (their R"(...)" strings) and tests/fuzz/seeds. A crash, a leak,
+# the scene files the tests write (their R"(...)" strings) and tests/fuzz/seeds (the photometry
+# targets: data/luminaires and tests/fuzz/seeds/ies, seeds/ldt). A crash, a leak,
 # a UB report or a hang fails the script; the input is left in BUILD_DIR/fuzz-artifacts/TARGET/:
 # copy it to tests/fuzz/regressions/TARGET/ once fixed. A hang is an input still running after
 # FUZZ_TIMEOUT seconds (default 10): libFuzzer measures wall-clock time, and a CI machine under
@@ -15,7 +16,7 @@ seconds="${1:?usage: tests/fuzz/run.sh SECONDS [BUILD_DIR]}"
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 root="$(cd "${here}/../.." && pwd)"
 build="${2:-${root}/build-sanitize}"
-targets=(scene pts study)
+targets=(scene pts study ies ldt)
 per_target=$((seconds / ${#targets[@]}))
 timeout="${FUZZ_TIMEOUT:-10}"
 ((per_target >= 1)) || per_target=1
@@ -62,6 +63,7 @@ seed() {
       extract_test_texts "${corpus}"
       ;;
     pts) cp "${root}"/data/*.pts "${here}"/seeds/pts/* "${corpus}/" ;;
+    ies | ldt) cp "${root}"/data/luminaires/*."${target}" "${here}/seeds/${target}/"* "${corpus}/" ;;
   esac
   cp "${here}/regressions/${target}/"* "${corpus}/" 2>/dev/null || true
 }

@@ -1,0 +1,84 @@
+// `penumbra luminaire FILE` as a user runs it: what it prints for the example luminaires, its
+// help, and its exit status and message for files it cannot read.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <string>
+
+#include "penumbra_process.hpp"
+#include "test_files.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+using penumbra::testing::Result;
+using penumbra::testing::runPenumbra;
+using penumbra::testing::TempDir;
+
+const fs::path kExamples = fs::path(PENUMBRA_SOURCE_DIR) / "data/luminaires";
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// Runs `penumbra luminaire` on the example `name` and expects each of `lines` in its output.
+void expectReport(const std::string& name, std::initializer_list<const char*> lines) {
+  TempDir dir("luminaire-cli");
+  const Result r = runPenumbra(dir.path(), "luminaire '" + (kExamples / name).string() + "'");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(r.err.empty()) << r.err;
+  for (const char* line : lines) EXPECT_TRUE(contains(r.out, line)) << line << "\n" << r.out;
+}
+
+TEST(LuminaireCommand, DescribesTheDownlight) {
+  expectReport(
+      "narrow-downlight.ies",
+      {"IES LM-63-2002", "photometric type  C", "rotational (one plane)",
+       "1 C plane (0°), 91 γ angles (0° to 90°)", "= 2000.0 lm", "LOR               85.00 %",
+       "disk, length 0.080 m (C0-C180) x width 0.080 m", "at C 0°, γ 0°",
+       "1700.0 lm = lamp lumens x LOR", "(within 0.1 %)", "warnings          none"});
+}
+
+TEST(LuminaireCommand, DescribesTheBatwingInEulumdat) {
+  expectReport("batwing.ldt", {"format            EULUMDAT\n", "quadrant (C0-C90 stored)",
+                               "7 C planes (0° to 90°), 37 γ angles (0° to 180°)",
+                               "2 x LED strip (4400 lm) = 4400.0 lm",
+                               "rectangle, length 1.200 m (C0-C180) x width 0.150 m",
+                               "at C 90°, γ 50°", "3960.0 lm = lamp lumens x LOR"});
+}
+
+TEST(LuminaireCommand, MalformedFileIsStatusTwoWithFileLineAndField) {
+  TempDir dir("luminaire-cli");
+  std::ofstream(dir.path() / "cut.ies")
+      << "IESNA:LM-63-2002\n[TEST] x\nTILT=NONE\n1 1000 1 3 1 1 2 0 0 0\n1 1 10\n0 45\n";
+  const Result r = runPenumbra(dir.path(), "luminaire cut.ies");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.err, "cut.ies:6: vertical angles: expected 3 values, found 2 (the file ends)\n");
+  EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+TEST(LuminaireCommand, UnknownExtensionAndMissingFileAreStatusOne) {
+  TempDir dir("luminaire-cli");
+  std::ofstream(dir.path() / "lamp.txt") << "hello\n";
+  const Result unknown = runPenumbra(dir.path(), "luminaire lamp.txt");
+  EXPECT_EQ(unknown.status, 1);
+  EXPECT_TRUE(contains(unknown.err, "lamp.txt: unknown photometric format")) << unknown.err;
+  const Result missing = runPenumbra(dir.path(), "luminaire none.ldt");
+  EXPECT_EQ(missing.status, 1);
+  EXPECT_EQ(missing.err, "none.ldt: cannot be read\n");
+}
+
+TEST(LuminaireCommand, HelpExplainsTheLines) {
+  TempDir dir("luminaire-cli");
+  const Result r = runPenumbra(dir.path(), "luminaire --help");
+  EXPECT_EQ(r.status, 0);
+  for (const char* part : {"IES LM-63", "EULUMDAT", "cd/klm", "zonal method", "lamp lumens x LOR",
+                           "docs/photometry.md", "Exit status"}) {
+    EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
+  }
+}
+
+}  // namespace
