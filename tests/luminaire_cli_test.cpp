@@ -45,7 +45,7 @@ TEST(LuminaireCommand, DescribesTheDownlight) {
 TEST(LuminaireCommand, DescribesTheBatwingInEulumdat) {
   expectReport("batwing.ldt", {"format            EULUMDAT\n", "quadrant (C0-C90 stored)",
                                "7 C planes (0° to 90°), 37 γ angles (0° to 180°)",
-                               "2 x LED strip (4400 lm) = 4400.0 lm",
+                               "2 x LED strip (4400 lm for the set) = 4400.0 lm",
                                "rectangle, length 1.200 m (C0-C180) x width 0.150 m",
                                "at C 90°, γ 50°", "3960.0 lm = lamp lumens x LOR"});
 }

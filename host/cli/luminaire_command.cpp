@@ -30,9 +30,10 @@ std::string lampsLine(const PhotometricData& data) {
   std::string text;
   for (const LampSet& set : data.lamps) {
     if (!text.empty()) text += " + ";
-    text += fmt::format(
-        "{} x {}{}", std::abs(set.count), set.type.empty() ? "lamp" : set.type,
-        data.format == PhotometricFormat::Eulumdat ? fmt::format(" ({:.0f} lm)", set.lumens) : "");
+    text += fmt::format("{} x {}{}", std::abs(set.count), set.type.empty() ? "lamp" : set.type,
+                        data.format == PhotometricFormat::Eulumdat
+                            ? fmt::format(" ({:.0f} lm for the set)", set.lumens)
+                            : "");
   }
   text += fmt::format(" = {:.1f} lm", data.lampLumens);
   if (data.absolutePhotometry) text += " (absolute photometry)";
