@@ -37,8 +37,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
 #include "grid/grid_evaluation.hpp"
+#include "illuminance/estimator.hpp"
 #include "scene/scene_loader.hpp"
 
 namespace {

@@ -55,7 +55,10 @@ std::vector<CsvRow> readCsv(const fs::path& file) {
   const auto all = lines(readText(file));
   EXPECT_FALSE(all.empty());
   if (all.empty()) return rows;
-  EXPECT_EQ(all[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  // With interreflection (the default) E_direct_lx and E_indirect_lx follow E_lx.
+  const bool withParts = all[0] == "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside";
+  if (!withParts) EXPECT_EQ(all[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  const std::size_t fields = withParts ? 10 : 8;
   for (std::size_t i = 1; i < all.size(); ++i) {
     std::vector<std::string> f(1);
     for (char c : all[i]) {
@@ -65,9 +68,10 @@ std::vector<CsvRow> readCsv(const fs::path& file) {
         f.back() += c;
       }
     }
-    EXPECT_EQ(f.size(), 8u) << all[i];
-    if (f.size() != 8) continue;
-    rows.push_back({std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[6]), f[7]});
+    EXPECT_EQ(f.size(), fields) << all[i];
+    if (f.size() != fields) continue;
+    rows.push_back(
+        {std::stod(f[0]), std::stod(f[1]), std::stod(f[2]), std::stod(f[6]), f[fields - 1]});
   }
   return rows;
 }
@@ -128,7 +132,9 @@ TEST(Cli, GridWithTheReferenceWritesEveryFile) {
 TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
   TempDir dir("penumbra-cli-test");
   writeScene(dir.path() / "scene.yaml");
-  const Result kernel = runPenumbra(dir.path(), "grid scene.yaml -o kernel --device cpu -q");
+  // The reference computes direct light only.
+  const Result kernel =
+      runPenumbra(dir.path(), "grid scene.yaml -o kernel --device cpu -q --direct-only");
   if (kernel.status != 0 && kernel.err.find("no OpenCL device") != std::string::npos) {
     GTEST_SKIP() << "no OpenCL CPU device: " << kernel.err;
   }
@@ -167,6 +173,66 @@ TEST(Cli, NoCullingGivesTheSameIlluminance) {
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i].e, b[i].e, 1e-6 * b[i].e) << i;
   const auto summary = nlohmann::json::parse(readText(dir.path() / "plain" / "summary.json"));
   EXPECT_NE(summary.dump().find("no culling"), std::string::npos) << summary.dump();
+}
+
+// By default E is the total: the CSV's E_direct_lx is, byte for byte, what --direct-only writes
+// as E_lx, E_indirect_lx is the rest, and the outputs say which they hold. A scene whose lit
+// solids have no material gets a warning naming them.
+TEST(Cli, TotalIlluminanceBesideItsDirectPart) {
+  TempDir dir("penumbra-cli-test");
+  std::string scene = kScene;
+  scene.replace(scene.find("  wall_thickness: 0.2\n"), 21,
+                "  wall_thickness: 0.2\n  materials: {floor: paint, ceiling: paint, walls: "
+                "paint}\n");
+  writeScene(dir.path() / "scene.yaml", "materials: {paint: 0.6}\n" + scene);
+  const Result total = runPenumbra(dir.path(), "grid scene.yaml -o total --device cpu");
+  if (total.status != 0 && total.err.find("no OpenCL device") != std::string::npos) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << total.err;
+  }
+  ASSERT_EQ(total.status, 0) << total.err;
+  EXPECT_NE(total.out.find("E: total illuminance (direct + interreflected)"), std::string::npos)
+      << total.out;
+  EXPECT_NE(total.err.find("without a material"), std::string::npos) << total.err;  // the table
+  const Result direct =
+      runPenumbra(dir.path(), "grid scene.yaml -o direct --device cpu -q --direct-only");
+  ASSERT_EQ(direct.status, 0) << direct.err;
+
+  const auto fields = [](const std::string& line) {
+    std::vector<std::string> f(1);
+    for (char c : line) {
+      if (c == ',') {
+        f.emplace_back();
+      } else {
+        f.back() += c;
+      }
+    }
+    return f;
+  };
+  const auto totalRows = lines(readText(dir.path() / "total" / "floor.csv"));
+  const auto directRows = lines(readText(dir.path() / "direct" / "floor.csv"));
+  ASSERT_EQ(totalRows.size(), directRows.size());
+  EXPECT_EQ(totalRows[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside");
+  EXPECT_EQ(directRows[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  for (std::size_t i = 1; i < totalRows.size(); ++i) {
+    const auto t = fields(totalRows[i]), d = fields(directRows[i]);
+    ASSERT_EQ(t.size(), 10u);
+    EXPECT_EQ(t[7], d[6]) << i;  // the same digits
+    const double e = std::stod(t[6]), eDirect = std::stod(t[7]), eIndirect = std::stod(t[8]);
+    EXPECT_EQ(eIndirect, e - eDirect) << i;
+    if (t[9].empty()) EXPECT_GT(eIndirect, 0.0) << i;  // the walls light every floor point
+  }
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "total" / "summary.json"));
+  EXPECT_EQ(summary["illuminance"], "total (direct + interreflected)");
+  EXPECT_GT(summary["interreflection"]["elements"].get<int>(), 0);
+  EXPECT_LE(summary["interreflection"]["relative_residual"].get<double>(), 1e-9);
+  // The table (a solid without material) is black, and named.
+  EXPECT_EQ(summary["interreflection"]["solids_without_material"], nlohmann::json({"table"}));
+  EXPECT_LT(summary["grids"][0]["direct"]["Eavg_lx"].get<double>(),
+            summary["grids"][0]["Eavg_lx"].get<double>());
+  const auto plain = nlohmann::json::parse(readText(dir.path() / "direct" / "summary.json"));
+  EXPECT_EQ(plain["illuminance"], "direct only");
+  EXPECT_FALSE(plain.contains("interreflection"));
+  EXPECT_EQ(plain["grids"][0]["Eavg_lx"], summary["grids"][0]["direct"]["Eavg_lx"]);
 }
 
 TEST(Cli, OnlyTheGridsAskedFor) {
@@ -235,8 +301,9 @@ TEST(Cli, HelpTeachesUnitsAndOutputs) {
   EXPECT_NE(top.out.find("devices"), std::string::npos);
   const Result grid = runPenumbra(dir.path(), "grid --help");
   EXPECT_EQ(grid.status, 0);
-  for (const char* word : {"E_lx", ".res", "summary.json", "Eavg_lx", "--reference-n", "--grid",
-                           "--device", "penumbra grid data/office.yaml -o out/office"}) {
+  for (const char* word : {"E_lx", "E_direct_lx", "E_indirect_lx", ".res", "summary.json",
+                           "Eavg_lx", "--reference-n", "--grid", "--device", "--direct-only",
+                           "--element-size", "penumbra grid data/office.yaml -o out/office"}) {
     EXPECT_NE(grid.out.find(word), std::string::npos) << word;
   }
 }

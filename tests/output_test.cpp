@@ -330,18 +330,31 @@ TEST(StagedDirectory, AFileInTheWayIsAnError) {
 // Table
 
 TEST(SummaryTable, HasTheColumnsAndOneRowPerGrid) {
-  const std::string table = summaryTable(handMadeRun());
+  RunReport run = handMadeRun();
+  const std::string table = summaryTable(run);
   const auto rows = lines(table);
-  ASSERT_GE(rows.size(), 4u);
+  ASSERT_GE(rows.size(), 5u);
+  // The first line says what E includes.
+  EXPECT_EQ(rows[0], "E: direct illuminance only");
   for (const char* column :
        {"Grid", "Points", "Spacing [m]", "Eavg [lx]", "Emin [lx]", "Emax [lx]", "U0", "Ud"}) {
-    EXPECT_NE(rows[0].find(column), std::string::npos) << column;
+    EXPECT_NE(rows[1].find(column), std::string::npos) << column;
   }
-  EXPECT_EQ(rows[2].rfind("work-plane", 0), 0u);
-  EXPECT_EQ(rows[3].rfind("desk top", 0), 0u);
+  EXPECT_EQ(rows[1].find("direct [lx]"), std::string::npos);
+  EXPECT_EQ(rows[3].rfind("work-plane", 0), 0u);
+  EXPECT_EQ(rows[4].rfind("desk top", 0), 0u);
   // Eavg of (512.35 + 1/7) / 2 = 256.2 lx to one decimal; U0 = (1/7) / Eavg.
-  EXPECT_NE(rows[2].find("256.2"), std::string::npos) << rows[2];
+  EXPECT_NE(rows[3].find("256.2"), std::string::npos) << rows[3];
   EXPECT_NE(table.find("1 of 3 points lie inside solids"), std::string::npos);
+
+  // With interreflection the total's metrics and, last, the direct part's Eavg.
+  run.interreflection = InterreflectionReport{};
+  run.grids[0].directMetrics = run.grids[0].metrics;
+  run.grids[0].directMetrics->eAvg = 123.45;
+  const auto total = lines(summaryTable(run));
+  EXPECT_EQ(total[0], "E: total illuminance (direct + interreflected)");
+  EXPECT_NE(total[1].find("Eavg direct [lx]"), std::string::npos) << total[1];
+  EXPECT_NE(total[3].find("123.5"), std::string::npos) << total[3];
 }
 
 }  // namespace

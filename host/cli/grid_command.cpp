@@ -1,6 +1,7 @@
 #include "cli/grid_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cstdio>
@@ -10,9 +11,9 @@
 #include "cli/exit_status.hpp"
 #include "cli/progress.hpp"
 #include "cli/version.hpp"
-#include "engine/estimator.hpp"
 #include "grid/run_report.hpp"
 #include "grid/scene_grids.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/grid_file_writer.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
@@ -24,16 +25,14 @@ namespace penumbra {
 
 namespace {
 
-EstimatorOptions estimatorOptions(const GridOptions& options) {
-  return EstimatorOptions{options.device, options.reference, options.referenceN, options.culling};
-}
-
 // Each grid's .csv and .res, written into the staging directory as its batches come.
 class StagedGridFiles : public GridStream {
  public:
-  StagedGridFiles(const std::filesystem::path& directory, const Scene& scene)
-      : directory_(directory), scene_(scene) {}
-  void start(const CalculationGrid& grid) override { files_.emplace(directory_, scene_, grid); }
+  StagedGridFiles(const std::filesystem::path& directory, const Scene& scene, bool withParts)
+      : directory_(directory), scene_(scene), withParts_(withParts) {}
+  void start(const CalculationGrid& grid) override {
+    files_.emplace(directory_, scene_, grid, withParts_);
+  }
   void write(const GridBatch& batch) override { files_->write(batch); }
   void finish() override {
     files_->close();
@@ -43,8 +42,19 @@ class StagedGridFiles : public GridStream {
  private:
   std::filesystem::path directory_;
   const Scene& scene_;
+  bool withParts_;
   std::optional<GridFileWriter> files_;
 };
+
+// Light reaches these solids, but without a material they reflect none of it.
+void warnAboutBlackSolids(const RunReport& report) {
+  if (!report.interreflection || report.interreflection->blackSolids.empty()) return;
+  const std::vector<std::string>& names = report.interreflection->blackSolids;
+  fmt::print(stderr,
+             "penumbra: warning: {} solid{} without a material reflect{} no light (black): {}\n",
+             names.size(), names.size() == 1 ? "" : "s", names.size() == 1 ? "s" : "",
+             fmt::join(names, ", "));
+}
 
 int run(const GridOptions& options) {
   const auto start = Clock::now();
@@ -59,12 +69,13 @@ int run(const GridOptions& options) {
   }
 
   const auto setupStart = Clock::now();
-  Estimator estimator(estimatorOptions(options), scene);
+  Estimator estimator(options.estimator, scene);
   RunReport report = runReport(scene, options.scene, estimator, kVersion);
   report.loadSeconds = loadSeconds;
   report.setupSeconds = secondsSince(setupStart);
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
+    warnAboutBlackSolids(report);
   }
 
   // The files are written while the grids are computed (so that no grid is ever held whole), into
@@ -73,7 +84,7 @@ int run(const GridOptions& options) {
   for (const CalculationGrid* grid : grids) gridNames.push_back(grid->name);
   resultFileNames(gridNames);  // refuses clashing names before anything is created
   StagedDirectory staged(options.output);
-  StagedGridFiles files(staged.staging(), scene);
+  StagedGridFiles files(staged.staging(), scene, report.interreflection.has_value());
   ProgressLine progress(!options.quiet);
   report.grids = streamGrids(scene, grids, estimator, files, &progress);
   report.totalSeconds = secondsSince(start);

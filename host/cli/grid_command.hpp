@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "illuminance/estimator.hpp"
 #include "scene/parameters.hpp"
 
 namespace penumbra {
@@ -12,10 +13,8 @@ namespace penumbra {
 struct GridOptions {
   std::filesystem::path scene;
   std::filesystem::path output;
-  std::string device = "auto";     // "auto", "cpu", "gpu" or an index from `penumbra devices`
-  bool reference = false;          // the host reference instead of the OpenCL kernel
-  int referenceN = 64;             // ~n² sub-elements per source face
-  bool culling = true;             // shadow-volume culling; --no-culling runs the plain path
+  // --device, --reference, --reference-n, --no-culling, --direct-only, --element-size
+  EstimatorOptions estimator;
   std::vector<std::string> grids;  // only these grids; all when empty
   ParameterValues parameters;      // --set: replace these defaults of the scene's parameters
   bool quiet = false;

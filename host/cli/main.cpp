@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
   gridCommand->add_option("scene", grid.scene, "Scene file (YAML, scene format v1)")->required();
   gridCommand->add_option("-o,--output", grid.output, "Output directory (created if missing)")
       ->required();
-  penumbra::cli::addEstimatorOptions(*gridCommand, grid.device, grid.reference, grid.referenceN);
+  penumbra::cli::addEstimatorOptions(*gridCommand, grid.estimator);
   // One name per --grid, so that `--grid a scene.yaml` does not swallow the scene.
   gridCommand
       ->add_option("--grid", grid.grids,
@@ -100,12 +100,12 @@ int main(int argc, char** argv) {
     return status == 0 ? 0 : 1;
   }
   if (*gridCommand) {
-    grid.culling = !gridNoCulling;
+    grid.estimator.culling = !gridNoCulling;
     grid.parameters = penumbra::cli::parameterAssignments(gridSettings);
     const int status = penumbra::runGridCommand(grid);
     if (status != 0 || !plotAfterGrid) return status;
     gridPlot.folder = grid.output;
-    gridPlot.device = grid.device;
+    gridPlot.device = grid.estimator.device;
     gridPlot.quiet = grid.quiet;
     return penumbra::viz::runPlotCommand(gridPlot);
   }
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
   if (*sweepCommand) {
     // Per-case plots (`plots: true`) with the sweep's device and the plot defaults.
     penumbra::viz::PlotOptions casePlots;
-    casePlots.device = sweep.device;
+    casePlots.device = sweep.estimator.device;
     sweep.caseOutputs = {std::make_shared<penumbra::viz::CasePlots>(casePlots)};
     return penumbra::runSweepCommand(sweep);
   }

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "illuminance/estimator.hpp"
 #include "scene/parameters.hpp"
 
 namespace penumbra::cli {
@@ -23,18 +24,29 @@ inline const CLI::Validator kParameterAssignment(
     },
     "NAME=VALUE");
 
-// --device, --reference, --reference-n: how `grid` and `sweep` compute E.
-inline void addEstimatorOptions(CLI::App& command, std::string& device, bool& reference,
-                                int& referenceN) {
+// --device, --reference, --reference-n, --direct-only, --element-size: how `grid` and `sweep`
+// compute E.
+inline void addEstimatorOptions(CLI::App& command, EstimatorOptions& options) {
   command
-      .add_option("--device", device,
+      .add_option("--device", options.device,
                   "OpenCL device: auto (first GPU, else CPU), cpu, gpu, or an index from "
                   "`penumbra devices`")
       ->capture_default_str();
-  command.add_flag("--reference", reference,
-                   "Use the host reference estimator instead of the OpenCL kernel");
+  command.add_flag("--reference", options.reference,
+                   "Use the host reference estimator instead of the OpenCL kernel (direct light "
+                   "only)");
   command
-      .add_option("--reference-n", referenceN, "Reference: about N*N sample points per source face")
+      .add_option("--reference-n", options.referenceN,
+                  "Reference: about N*N sample points per source face")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  command.add_flag("!--direct-only", options.interreflection,
+                   "Direct light only: leave out the light the room's surfaces reflect (E is then "
+                   "the direct illuminance, as without interreflection)");
+  command
+      .add_option("--element-size", options.mesh.elementSize,
+                  "Interreflection: the longest side of a surface element in m; smaller is more "
+                  "exact and slower (docs/method.md, \"Interreflection\")")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
 }

@@ -66,7 +66,7 @@ int submitSweep(const SweepOptions& options) {
   }
   settings.dryRun = options.dryRun;
   settings.resume = options.resume;
-  settings.estimator = EstimatorOptions{options.device, options.reference, options.referenceN};
+  settings.estimator = options.estimator;
   settings.penumbra = std::filesystem::read_symlink("/proc/self/exe");
   const SlurmSubmission s = submitToSlurm(loadStudy(options.study), settings);
   if (options.quiet && !options.dryRun) return 0;
@@ -103,7 +103,7 @@ int runSweepCommand(const SweepOptions& options) {
     SweepSettings settings;
     settings.output = options.output;
     if (!options.shard.empty()) settings.shard = parseShard(options.shard);
-    settings.estimator = EstimatorOptions{options.device, options.reference, options.referenceN};
+    settings.estimator = options.estimator;
     settings.resume = options.resume;
     settings.version = kVersion;
     settings.charts = options.charts;
@@ -112,8 +112,9 @@ int runSweepCommand(const SweepOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     const Study study = loadStudy(options.study);
     // Renders need no display: host/ writes them, on the device the grids use.
-    if (!study.renders.empty() && !options.reference) {
-      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(study.renders, options.device));
+    if (!study.renders.empty() && !options.estimator.reference) {
+      settings.caseOutputs.push_back(
+          std::make_shared<CaseRenders>(study.renders, options.estimator.device));
     }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);

@@ -13,10 +13,8 @@ namespace penumbra {
 struct SweepOptions {
   std::filesystem::path study;
   std::filesystem::path output;
-  std::string device = "auto";  // as for `penumbra grid`
-  bool reference = false;
-  int referenceN = 64;
-  std::string shard;  // "i/N"; empty: every case
+  EstimatorOptions estimator;  // as for `penumbra grid`
+  std::string shard;           // "i/N"; empty: every case
   bool resume = false;
   bool quiet = false;
   // --slurm: submit the shards to Slurm instead of computing (docs/cluster.md).

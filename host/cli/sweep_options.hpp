@@ -20,7 +20,7 @@ inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
   command->add_flag("--resume", options.resume,
                     "Continue a run into the output folder it used: fails unless the folder "
                     "holds this very study; computes what is missing, rebuilds the tables");
-  addEstimatorOptions(*command, options.device, options.reference, options.referenceN);
+  addEstimatorOptions(*command, options.estimator);
   command->add_flag("-q,--quiet", options.quiet, "No progress and no summary; errors only");
   CLI::Option* slurm = command->add_flag(
       "--slurm", options.slurm,

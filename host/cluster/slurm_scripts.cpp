@@ -37,6 +37,8 @@ std::string estimatorArguments(const EstimatorOptions& estimator) {
   std::string text = " --device " + shellQuote(estimator.device);
   if (estimator.reference)
     text += fmt::format(" --reference --reference-n {}", estimator.referenceN);
+  if (!estimator.interreflection) text += " --direct-only";
+  text += fmt::format(" --element-size {}", estimator.mesh.elementSize);
   return text;
 }
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
+#include "illuminance/estimator.hpp"
 
 namespace penumbra {
 

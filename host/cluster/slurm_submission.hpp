@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
+#include "illuminance/estimator.hpp"
 #include "study/study.hpp"
 
 namespace penumbra {

@@ -176,6 +176,45 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
   result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
   if (n == 0) return result;
+  const KernelOutput output = launch(points, bySource, true);
+  const std::vector<float>& e = output.illuminance;
+  const std::size_t padded = output.padded;
+  if (bySource) {
+    result.bySource.resize(n * result.sourceCount);
+    result.illuminance.assign(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int s = 0; s < result.sourceCount; ++s) {
+        const double v = e[s * padded + i];
+        result.bySource[i * result.sourceCount + s] = v;
+        result.illuminance[i] += v;
+      }
+  } else {
+    result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  }
+
+  // The kernel writes classes source by source ([source][padded point]); callers read them point
+  // by point.
+  result.shadowClass.resize(n * result.sourceCount);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int s = 0; s < result.sourceCount; ++s)
+      result.shadowClass[i * result.sourceCount + s] =
+          static_cast<ShadowClass>(output.classes[s * padded + i]);
+  return result;
+}
+
+std::vector<float> IlluminanceEngine::illuminanceBySource(std::span<const SamplePoint> points,
+                                                          std::size_t& stride) {
+  stride = 0;
+  if (points.empty()) return {};
+  KernelOutput output = launch(points, true, false);
+  stride = output.padded;
+  return std::move(output.illuminance);
+}
+
+IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const SamplePoint> points,
+                                                          bool bySource, bool withClasses) {
+  const int sourceCount = state_->packed.sourceCount;
+  const std::size_t n = points.size();
   // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
   // KernelLaunch::run for why the work-group size is fixed).
   constexpr std::size_t kWorkGroup = 16;
@@ -202,8 +241,8 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
                       state_->options.culling, 2.0 * state_->packed.epsLength);
 
   compute::Device& d = *state_->device;
-  const std::size_t outValues = bySource ? padded * std::max(result.sourceCount, 1) : padded;
-  const std::size_t classBytes = padded * std::max(result.sourceCount, 1);
+  const std::size_t outValues = bySource ? padded * std::max(sourceCount, 1) : padded;
+  const std::size_t classBytes = padded * std::max(sourceCount, 1);
   const std::vector<std::size_t> batch = {
       padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
       padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
@@ -215,15 +254,23 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
     constexpr std::size_t kGroupPoints = PN_LANES * kWorkGroup;
     if (n > kGroupPoints) {
       const std::size_t half = (n / 2 + kGroupPoints - 1) / kGroupPoints * kGroupPoints;
-      IlluminanceResult first = evaluateInOrder(points.first(half), bySource);
-      IlluminanceResult second = evaluateInOrder(points.subspan(half), bySource);
-      const auto append = [](auto& to, const auto& from) {
-        to.insert(to.end(), from.begin(), from.end());
+      const KernelOutput first = launch(points.first(half), bySource, withClasses);
+      const KernelOutput second = launch(points.subspan(half), bySource, withClasses);
+      // Both halves' rows ([source][point]) side by side in rows of the whole's stride.
+      KernelOutput whole;
+      whole.padded = first.padded + second.padded;
+      const auto join = [&](const auto& a, const auto& b, auto& to) {
+        const std::size_t rows = a.size() / first.padded;
+        to.resize(rows * whole.padded);
+        for (std::size_t r = 0; r < rows; ++r) {
+          std::copy_n(a.begin() + r * first.padded, first.padded, to.begin() + r * whole.padded);
+          std::copy_n(b.begin() + r * second.padded, second.padded,
+                      to.begin() + r * whole.padded + first.padded);
+        }
       };
-      append(first.illuminance, second.illuminance);
-      append(first.bySource, second.bySource);
-      append(first.shadowClass, second.shadowClass);
-      return first;
+      join(first.illuminance, second.illuminance, whole.illuminance);
+      join(first.classes, second.classes, whole.classes);
+      return whole;
     }
     compute::requireDeviceMemory(
         d.info(), batch, state_->sceneBytes, fmt::format("a batch of {} points", n),
@@ -270,36 +317,20 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
   bindIlluminanceArguments(launch, params, buffers);
   launch.run(workItems, kWorkGroup);
 
-  std::vector<float> e(outValues);
-  out.download(e.data(), outValues * sizeof(float));
+  KernelOutput output;
+  output.padded = padded;
+  output.illuminance.resize(outValues);
+  out.download(output.illuminance.data(), outValues * sizeof(float));
   std::vector<cl_int> errorBits(workItems);
   errors.download(errorBits.data(), workItems * sizeof(cl_int));
   for (std::size_t w = 0; w < workItems; ++w)
     if (errorBits[w] != 0)
       throw std::runtime_error(kernelError(errorBits[w], points[std::min(w * PN_LANES, n - 1)]));
-  if (bySource) {
-    result.bySource.resize(n * result.sourceCount);
-    result.illuminance.assign(n, 0.0);
-    for (std::size_t i = 0; i < n; ++i)
-      for (int s = 0; s < result.sourceCount; ++s) {
-        const double v = e[s * padded + i];
-        result.bySource[i * result.sourceCount + s] = v;
-        result.illuminance[i] += v;
-      }
-  } else {
-    result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  if (withClasses) {
+    output.classes.resize(classBytes);
+    classes.download(output.classes.data(), classBytes);
   }
-
-  // The kernel writes classes source by source ([source][padded point]); callers read them point
-  // by point.
-  std::vector<std::uint8_t> classesBySource(classBytes);
-  classes.download(classesBySource.data(), classBytes);
-  result.shadowClass.resize(n * result.sourceCount);
-  for (std::size_t i = 0; i < n; ++i)
-    for (int s = 0; s < result.sourceCount; ++s)
-      result.shadowClass[i * result.sourceCount + s] =
-          static_cast<ShadowClass>(classesBySource[s * padded + i]);
-  return result;
+  return output;
 }
 
 }  // namespace penumbra

@@ -56,8 +56,22 @@ class IlluminanceEngine {
   // With `bySource`, also E from each source separately (a render needs it when sources differ
   // in colour).
   IlluminanceResult evaluate(std::span<const SamplePoint> points, bool bySource = false);
+  // E from each source separately, in float as the kernel computes it, for points in the order
+  // given (no reordering, no shadow classes): value [source · stride + point]. What the
+  // interreflection's element-to-element transfer reads, where per-source values are the
+  // whole output and copying them would cost more than computing them.
+  std::vector<float> illuminanceBySource(std::span<const SamplePoint> points, std::size_t& stride);
 
  private:
+  // One launch (or several, on a device too small for the batch): E per source ([source][padded
+  // point]) or summed ([padded point]), and the classes ([source][padded point]) when asked.
+  struct KernelOutput {
+    std::size_t padded = 0;
+    std::vector<float> illuminance;
+    std::vector<std::uint8_t> classes;
+  };
+  KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses);
+
   // evaluate() for points in the order the kernel's work-items take them.
   IlluminanceResult evaluateInOrder(std::span<const SamplePoint> points, bool bySource);
 

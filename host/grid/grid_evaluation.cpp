@@ -209,7 +209,11 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   std::vector<SamplePoint> outside;
   std::vector<std::size_t> outsideAt;  // offsets in the chunk
   std::vector<int> inside, onSolid;
-  std::vector<double> e;
+  std::vector<double> e, direct;
+  GridMetricsSum directSums;
+  // Whether the estimator gives the direct part too, known from its first answer; the points
+  // before it are inside solids (E = 0, direct part 0).
+  bool answered = false, split = false;
   if (progress) progress(0, n);
   std::size_t next = 0;
   while (next < n) {
@@ -233,18 +237,31 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
       if (outside.empty() && inside.size() >= batchSize) break;
     }
     e.assign(inside.size(), 0.0);
+    direct.assign(split ? inside.size() : 0, 0.0);
     if (!outside.empty()) {
-      const std::vector<double> values = estimate(outside);
-      if (values.size() != outside.size()) {
+      const PointIlluminance values = estimate(outside);
+      if (values.total.size() != outside.size() ||
+          (!values.direct.empty() && values.direct.size() != outside.size()) ||
+          (answered && split == values.direct.empty())) {
         throw std::logic_error("estimator returned the wrong number of values");
       }
-      for (std::size_t k = 0; k < values.size(); ++k) e[outsideAt[k]] = values[k];
+      if (!answered) {
+        answered = true;
+        split = !values.direct.empty();
+        direct.assign(split ? inside.size() : 0, 0.0);
+      }
+      for (std::size_t k = 0; k < values.total.size(); ++k) e[outsideAt[k]] = values.total[k];
+      for (std::size_t k = 0; k < values.direct.size(); ++k)
+        direct[outsideAt[k]] = values.direct[k];
     }
     for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
-    if (sink) sink(GridBatch{first, e, inside, onSolid});
+    for (std::size_t k = 0; k < e.size(); ++k)
+      directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
+    if (sink) sink(GridBatch{first, e, direct, inside, onSolid});
     if (progress) progress(next, n);
   }
   run.metrics = sums.metrics(grid.spacing);
+  if (split) run.directMetrics = directSums.metrics(grid.spacing);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
@@ -263,11 +280,14 @@ GridEvaluation evaluateGrid(const Scene& scene, const CalculationGrid& grid,
           SamplePoint{grid.position(i), grid.normal(i), batch.onSolid[k]});
       evaluation.samples.inside.push_back(batch.inside[k]);
       evaluation.illuminance.push_back(batch.illuminance[k]);
+      // A batch before the estimator's first answer holds inside points only: direct = total = 0.
+      evaluation.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
     }
   };
   const GridRun run = streamGrid(scene, grid, estimate, batchSize, keep, progress);
   evaluation.name = run.name;
   evaluation.metrics = run.metrics;
+  if (!run.directMetrics) evaluation.direct.clear();
   evaluation.seconds = run.seconds;
   return evaluation;
 }

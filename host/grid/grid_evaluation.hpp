@@ -10,14 +10,15 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
 #include "geometry/bounding_box.hpp"
 #include "geometry/sample_point.hpp"
 #include "grid/grid_metrics.hpp"
+#include "illuminance/estimator.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -70,7 +71,8 @@ using ProgressCallback = std::function<void(std::size_t done, std::size_t total)
 // grid order as soon as they are known.
 struct GridBatch {
   std::size_t first = 0;
-  std::span<const double> illuminance;  // lx; 0 for points inside solids
+  std::span<const double> illuminance;  // lx, total; 0 for points inside solids
+  std::span<const double> direct;       // lx, its direct part; empty for a direct-only run
   std::span<const int> inside;          // index into Scene::solids, -1 for none
   std::span<const int> onSolid;         // the solid each point lies on, -1 for none
 };
@@ -80,8 +82,9 @@ using GridBatchSink = std::function<void(const GridBatch&)>;
 // time spent evaluating it.
 struct GridRun {
   std::string name;
-  GridMetrics metrics;
-  double seconds = 0.0;  // wall time: classifying points and the estimator
+  GridMetrics metrics;                       // of the total
+  std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
+  double seconds = 0.0;                      // wall time: classifying points and the estimator
 };
 
 // Evaluates the points that are not inside solids, `batchSize` at a time (the estimator sees the
@@ -95,7 +98,8 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
 struct GridEvaluation {
   std::string name;
   GridSamples samples;
-  std::vector<double> illuminance;  // lx, per point; 0 for points inside solids
+  std::vector<double> illuminance;  // lx, per point, total; 0 for points inside solids
+  std::vector<double> direct;       // lx, its direct part; empty for a direct-only run
   GridMetrics metrics;
   double seconds = 0.0;
 };

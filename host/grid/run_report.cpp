@@ -9,6 +9,7 @@ GridReport streamedGridReport(const CalculationGrid& grid, const GridRun& run) {
   report.columns = grid.kind == GridKind::Points ? 0 : grid.columns;
   report.rows = grid.kind == GridKind::Points ? 0 : grid.rows;
   report.metrics = run.metrics;
+  report.directMetrics = run.directMetrics;
   report.seconds = run.seconds;
   return report;
 }

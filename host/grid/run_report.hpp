@@ -2,12 +2,14 @@
 // What one `penumbra grid` run produced, in the form the output layer writes: self-contained (no
 // Scene needed), so that it can be written, printed and tested on its own.
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/sample_point.hpp"
 #include "grid/grid_evaluation.hpp"
 #include "grid/grid_metrics.hpp"
+#include "radiosity/interreflection.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -21,10 +23,12 @@ struct GridReport {
   // Per point, in the grid's order. Empty when the points went to the files batch by batch
   // (`penumbra grid`, streamGrid): summary.json and the table need only the rest.
   std::vector<SamplePoint> points;
-  std::vector<std::string> insideSolids;  // the containing solid's name, "" for none
-  std::vector<double> illuminance;        // lx; 0 inside solids
-  GridMetrics metrics;
-  double seconds = 0.0;  // time spent computing E for this grid
+  std::vector<std::string> insideSolids;     // the containing solid's name, "" for none
+  std::vector<double> illuminance;           // lx, total; 0 inside solids
+  std::vector<double> direct;                // lx, its direct part; empty for a direct-only run
+  GridMetrics metrics;                       // of the total
+  std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
+  double seconds = 0.0;                      // time spent computing E for this grid
 };
 
 struct RunReport {
@@ -37,6 +41,8 @@ struct RunReport {
   double loadSeconds = 0.0;         // reading and validating the scene
   double setupSeconds = 0.0;        // device selection, program build, scene upload
   double totalSeconds = 0.0;        // the whole run before writing
+  // The interreflection solver's report; empty when the run is direct light only.
+  std::optional<InterreflectionReport> interreflection;
   std::vector<GridReport> grids;
 };
 

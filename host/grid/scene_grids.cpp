@@ -17,6 +17,9 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
   report.estimator = estimator.name();
   report.referenceN = estimator.referenceN();
   report.device = estimator.device();
+  if (const InterreflectionReport* solved = estimator.interreflection()) {
+    report.interreflection = *solved;
+  }
   return report;
 }
 
@@ -81,6 +84,8 @@ class KeepingStream : public GridStream {
       report.points.push_back(SamplePoint{grid_->position(i), grid_->normal(i), batch.onSolid[k]});
       report.insideSolids.push_back(inside >= 0 ? scene_.solids.at(inside).name : std::string());
       report.illuminance.push_back(batch.illuminance[k]);
+      // A batch before the estimator's first answer holds inside points only: direct = total = 0.
+      report.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
     }
   }
   void finish() override {}
@@ -103,6 +108,7 @@ std::vector<GridReport> evaluateGrids(const Scene& scene,
     reports[g].points = std::move(keep.kept[g].points);
     reports[g].insideSolids = std::move(keep.kept[g].insideSolids);
     reports[g].illuminance = std::move(keep.kept[g].illuminance);
+    if (reports[g].directMetrics) reports[g].direct = std::move(keep.kept[g].direct);
   }
   return reports;
 }

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
 #include "grid/run_report.hpp"
+#include "illuminance/estimator.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {

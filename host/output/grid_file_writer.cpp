@@ -8,8 +8,8 @@
 namespace penumbra {
 
 GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                               const CalculationGrid& grid)
-    : grid_(&grid) {
+                               const CalculationGrid& grid, bool withParts)
+    : grid_(&grid), withParts_(withParts) {
   for (const Solid& solid : scene.solids) insideNames_.push_back(csvField(solid.name));
   const std::string stem = gridFileStem(grid.name);
   csvPath_ = directory / (stem + ".csv");
@@ -18,7 +18,8 @@ GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Sce
   if (!csv_) throw std::runtime_error("cannot create " + csvPath_.string());
   res_.open(resPath_, std::ios::binary);
   if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
-  csv_.write(kGridCsvHeader.data(), static_cast<std::streamsize>(kGridCsvHeader.size()));
+  const std::string_view header = gridCsvHeader(withParts);
+  csv_.write(header.data(), static_cast<std::streamsize>(header.size()));
   thread_ = std::thread([this] { writeBatches(); });
 }
 
@@ -39,6 +40,7 @@ void GridFileWriter::write(const GridBatch& batch) {
   Batch& next = waiting_.emplace(std::move(spare_));
   next.first = batch.first;
   next.illuminance.assign(batch.illuminance.begin(), batch.illuminance.end());
+  next.direct.assign(batch.direct.begin(), batch.direct.end());
   next.inside.assign(batch.inside.begin(), batch.inside.end());
   lock.unlock();
   changed_.notify_all();
@@ -88,8 +90,14 @@ void GridFileWriter::writeBatch(const Batch& batch) {
   for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
     const std::size_t i = batch.first + k;
     const int inside = batch.inside[k];
-    rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k],
-              inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view());
+    const std::string_view insideField =
+        inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view();
+    if (withParts_) {
+      const double direct = batch.direct.empty() ? batch.illuminance[k] : batch.direct[k];
+      rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k], direct, insideField);
+    } else {
+      rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k], insideField);
+    }
   }
   csv_.write(rows_.csv().data(), static_cast<std::streamsize>(rows_.csv().size()));
   res_.write(rows_.res().data(), static_cast<std::streamsize>(rows_.res().size()));

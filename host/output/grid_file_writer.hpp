@@ -27,8 +27,9 @@ class GridFileWriter {
  public:
   // Creates <directory>/<stem>.csv and .res (gridFileStem) and writes the CSV header. `grid`
   // must outlive the writer.
+  // With `withParts`, the CSV has the direct and indirect columns (grid_rows.hpp).
   GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                 const CalculationGrid& grid);
+                 const CalculationGrid& grid, bool withParts = false);
   // Without close(): stops after the batch being written; the files stay as they are.
   ~GridFileWriter();
   GridFileWriter(const GridFileWriter&) = delete;
@@ -45,12 +46,15 @@ class GridFileWriter {
   struct Batch {
     std::size_t first = 0;
     std::vector<double> illuminance;
+    std::vector<double>
+        direct;  // empty: direct = illuminance (a direct-only run, or inside points)
     std::vector<int> inside;
   };
   void writeBatches();              // the thread
   void writeBatch(const Batch& b);  // text and bytes, on the thread
 
   const CalculationGrid* grid_;
+  bool withParts_ = false;
   std::vector<std::string> insideNames_;  // per solid, as a CSV field
   std::filesystem::path csvPath_, resPath_;
   std::ofstream csv_, res_;

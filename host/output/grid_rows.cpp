@@ -6,10 +6,20 @@ namespace penumbra {
 
 void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance,
                    std::string_view insideField) {
-  // Room for seven numbers and their separators, the field and the line break; the buffer is
+  addRow(position, normal, illuminance, nullptr, insideField);
+}
+
+void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance, double direct,
+                   std::string_view insideField) {
+  addRow(position, normal, illuminance, &direct, insideField);
+}
+
+void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminance,
+                      const double* direct, std::string_view insideField) {
+  // Room for nine numbers and their separators, the field and the line break; the buffer is
   // then cut to what was written (fmt's resize leaves new bytes unset).
   const std::size_t start = csv_.size();
-  csv_.resize(start + 7 * (kMaxNumberText + 1) + insideField.size() + 1);
+  csv_.resize(start + 9 * (kMaxNumberText + 1) + insideField.size() + 1);
   char* out = csv_.data() + start;
   for (const double value :
        {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
@@ -21,6 +31,12 @@ void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance,
   const auto eSize = static_cast<std::size_t>(out - e);
   addResLine(e, eSize);
   *out++ = ',';
+  if (direct != nullptr) {
+    out = writeNumber(out, *direct);
+    *out++ = ',';
+    out = writeNumber(out, illuminance - *direct);
+    *out++ = ',';
+  }
   if (!insideField.empty()) std::memcpy(out, insideField.data(), insideField.size());
   out += insideField.size();
   *out++ = '\n';

@@ -1,8 +1,10 @@
 #pragma once
 // The rows of a grid's .csv and the lines of its .res, the only place their format is spelt out:
 //   <grid>.csv   x_m,y_m,z_m,nx,ny,nz,E_lx,inside   one row per point; `inside` the name of the
-//                solid containing the point as a CSV field, empty for none
-//   <grid>.res   E_lx, one value a line
+//                solid containing the point as a CSV field, empty for none. With interreflection
+//                x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside: E_lx the total,
+//                E_indirect_lx = E_lx - E_direct_lx
+//   <grid>.res   E_lx (the total), one value a line
 // Numbers are written as number_text.hpp says (fmt's "{}": the shortest text that reads back to
 // the same double).
 #include <fmt/format.h>
@@ -15,6 +17,11 @@
 namespace penumbra {
 
 inline constexpr std::string_view kGridCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
+inline constexpr std::string_view kGridCsvHeaderWithParts =
+    "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside\n";
+inline std::string_view gridCsvHeader(bool withParts) {
+  return withParts ? kGridCsvHeaderWithParts : kGridCsvHeader;
+}
 
 // Rows of both files, appended point by point into two buffers that keep their memory when
 // cleared, so that writing a batch allocates nothing once the buffers have grown to a batch.
@@ -22,6 +29,9 @@ class GridRows {
  public:
   // Appends the point's CSV row and its .res line; `insideField` is already a CSV field.
   void add(const Vec3& position, const Vec3& normal, double illuminance,
+           std::string_view insideField);
+  // The same with the direct part (and the indirect one, the difference) after E.
+  void add(const Vec3& position, const Vec3& normal, double illuminance, double direct,
            std::string_view insideField);
   // Appends the .res line alone.
   void addIlluminance(double illuminance);
@@ -34,6 +44,8 @@ class GridRows {
 
  private:
   void addResLine(const char* text, std::size_t size);
+  void addRow(const Vec3& position, const Vec3& normal, double illuminance, const double* direct,
+              std::string_view insideField);
 
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
   fmt::memory_buffer csv_, res_;

@@ -106,11 +106,18 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
 }
 
 void writeGridCsv(std::ostream& out, const GridReport& grid) {
-  out.write(kGridCsvHeader.data(), static_cast<std::streamsize>(kGridCsvHeader.size()));
+  const bool withParts = !grid.direct.empty();
+  const std::string_view header = gridCsvHeader(withParts);
+  out.write(header.data(), static_cast<std::streamsize>(header.size()));
   GridRows rows;
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
-    rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
-             csvField(grid.insideSolids[i]));
+    if (withParts) {
+      rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i], grid.direct[i],
+               csvField(grid.insideSolids[i]));
+    } else {
+      rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
+               csvField(grid.insideSolids[i]));
+    }
     if (rows.csv().size() > (1u << 20)) {
       out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
       rows.clear();
@@ -131,12 +138,16 @@ void writeGridRes(std::ostream& out, const GridReport& grid) {
   out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
 }
 
+std::string illuminanceMeaning(const RunReport& report) {
+  return report.interreflection ? "total (direct + interreflected)" : "direct only";
+}
+
 nlohmann::json summaryJson(const RunReport& report) {
   nlohmann::json grids = nlohmann::json::array();
   for (const GridReport& grid : report.grids) {
     const GridMetrics& m = grid.metrics;
     const std::string stem = gridFileStem(grid.name);
-    grids.push_back({
+    nlohmann::json entry({
         {"name", grid.name},
         {"csv", stem + ".csv"},
         {"res", stem + ".res"},
@@ -155,6 +166,15 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"Ud", number(m.ud)},
         {"time_s", grid.seconds},
     });
+    if (grid.directMetrics) {
+      const GridMetrics& d = *grid.directMetrics;
+      entry["direct"] = {{"Eavg_lx", number(d.eAvg)},
+                         {"Emin_lx", number(d.eMin)},
+                         {"Emax_lx", number(d.eMax)},
+                         {"U0", number(d.u0)},
+                         {"Ud", number(d.ud)}};
+    }
+    grids.push_back(std::move(entry));
   }
   nlohmann::json summary = {
       {"penumbra_version", report.version},
@@ -175,6 +195,25 @@ nlohmann::json summaryJson(const RunReport& report) {
       {"grids", grids},
   };
   if (report.estimator == "reference") summary["reference_n"] = report.referenceN;
+  summary["illuminance"] = illuminanceMeaning(report);
+  if (report.interreflection) {
+    const InterreflectionReport& r = *report.interreflection;
+    nlohmann::json black = nlohmann::json::array();
+    for (const std::string& name : r.blackSolids) black.push_back(name);
+    summary["interreflection"] = {
+        {"elements", r.elements},
+        {"element_size_m", r.elementSize},
+        {"quadrature_nodes", r.nodes},
+        {"surface_area_m2", r.surfaceArea},
+        {"relative_residual", r.residual},
+        {"solids_without_material", black},
+        {"timing",
+         {{"mesh_s", r.meshSeconds},
+          {"transfer_s", r.transferSeconds},
+          {"solve_s", r.solveSeconds},
+          {"gather_setup_s", r.setupSeconds}}},
+    };
+  }
   return summary;
 }
 

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grid/grid_metrics.hpp"
+#include "output/grid_rows.hpp"
 #include "output/result_files.hpp"
 
 namespace penumbra {
@@ -19,8 +20,6 @@ namespace penumbra {
 namespace {
 
 namespace fs = std::filesystem;
-
-constexpr const char* kCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside";
 
 // One CSV record; RFC 4180 quotes (the only field that can have them is `inside`).
 std::vector<std::string> csvFields(const std::string& line) {
@@ -120,6 +119,9 @@ GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   for (const std::string& solid : grid.insideSolids) inside.push_back(solid.empty() ? -1 : 0);
   const double spacing = entry.contains("spacing_m") ? numberOrNaN(entry["spacing_m"]) : 0.0;
   grid.metrics = gridMetrics(grid.illuminance, inside, std::isnan(spacing) ? 0.0 : spacing);
+  if (!grid.direct.empty()) {
+    grid.directMetrics = gridMetrics(grid.direct, inside, std::isnan(spacing) ? 0.0 : spacing);
+  }
   return grid;
 }
 
@@ -127,15 +129,22 @@ GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
 
 void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
   std::string line;
-  if (!std::getline(in, line) || line != kCsvHeader) {
-    throw std::runtime_error(fmt::format("{}:1: expected the header {}", fileName, kCsvHeader));
+  const auto header = [](bool withParts) {
+    const std::string_view text = gridCsvHeader(withParts);
+    return std::string(text.substr(0, text.size() - 1));  // without the line break
+  };
+  if (!std::getline(in, line) || (line != header(false) && line != header(true))) {
+    throw std::runtime_error(
+        fmt::format("{}:1: expected the header {} or {}", fileName, header(false), header(true)));
   }
+  const bool withParts = line == header(true);
+  const std::size_t fields = withParts ? 10 : 8;
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty()) continue;
     const std::string where = fmt::format("{}:{}", fileName, lineNumber);
     const std::vector<std::string> f = csvFields(line);
-    if (f.size() != 8) {
-      throw std::runtime_error(fmt::format("{}: {} fields, expected 8", where, f.size()));
+    if (f.size() != fields) {
+      throw std::runtime_error(fmt::format("{}: {} fields, expected {}", where, f.size(), fields));
     }
     SamplePoint point;
     point.position =
@@ -144,7 +153,8 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
         Vec3(parseNumber(f[3], where), parseNumber(f[4], where), parseNumber(f[5], where));
     grid.points.push_back(point);
     grid.illuminance.push_back(parseNumber(f[6], where));
-    grid.insideSolids.push_back(f[7]);
+    if (withParts) grid.direct.push_back(parseNumber(f[7], where));
+    grid.insideSolids.push_back(f[fields - 1]);
   }
 }
 

@@ -31,20 +31,28 @@ std::string spacing(double s) {
 }  // namespace
 
 std::string summaryTable(const RunReport& report) {
-  using Row = std::array<std::string, 8>;
+  // With interreflection, a last column gives the direct part of Eavg.
+  const bool withDirect = report.interreflection.has_value();
+  using Row = std::vector<std::string>;
   std::vector<Row> rows;
   rows.push_back(
       {"Grid", "Points", "Spacing [m]", "Eavg [lx]", "Emin [lx]", "Emax [lx]", "U0", "Ud"});
+  if (withDirect) rows.back().push_back("Eavg direct [lx]");
   for (const GridReport& grid : report.grids) {
     const GridMetrics& m = grid.metrics;
     rows.push_back({grid.name, fmt::format("{}", m.points), spacing(m.spacing), lux(m.eAvg),
                     lux(m.eMin), lux(m.eMax), ratio(m.u0), ratio(m.ud)});
+    if (withDirect) {
+      rows.back().push_back(grid.directMetrics ? lux(grid.directMetrics->eAvg) : kUndefined);
+    }
   }
-  std::array<std::size_t, 8> width{};
+  std::vector<std::size_t> width(rows.front().size(), 0);
   for (const Row& row : rows) {
     for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
   }
-  std::string table;
+  std::string table =
+      fmt::format("E: {}\n", report.interreflection ? "total illuminance (direct + interreflected)"
+                                                    : "direct illuminance only");
   const auto appendRow = [&](const Row& row) {
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (c > 0) table += " | ";

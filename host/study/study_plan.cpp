@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "grid/scene_grids.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/case_fingerprint.hpp"
@@ -27,7 +29,9 @@ void checkGrids(const Study& study, const Scene& scene, const std::string& caseI
 }  // namespace
 
 std::string estimatorIdentity(const EstimatorOptions& options) {
-  return options.reference ? "reference n=" + std::to_string(options.referenceN) : "kernel";
+  if (options.reference) return "reference n=" + std::to_string(options.referenceN);
+  if (!options.interreflection) return "kernel, direct only";
+  return fmt::format("kernel, interreflection, elements {} m", options.mesh.elementSize);
 }
 
 Scene loadCaseScene(const Study& study, const PlannedCase& planned) {

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
+#include "illuminance/estimator.hpp"
 #include "scene/scene.hpp"
 #include "study/study.hpp"
 #include "study/study_layout.hpp"

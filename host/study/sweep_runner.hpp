@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "engine/estimator.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/case_output.hpp"
 #include "output/sweep_files.hpp"
 #include "study/study.hpp"

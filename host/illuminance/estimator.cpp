@@ -1,4 +1,4 @@
-#include "engine/estimator.hpp"
+#include "illuminance/estimator.hpp"
 
 #include <algorithm>
 #include <stdexcept>
@@ -29,18 +29,39 @@ Estimator::Estimator(const EstimatorOptions& options, const Scene& scene) : scen
   engine_ = std::make_unique<IlluminanceEngine>(*clDevice_, scene, EngineOptions{options.culling});
   if (!options.culling) device_ += ", no culling";
   batchSize_ = 1 << 16;  // large enough to keep a GPU busy, small enough for progress
+  withInterreflection_ = options.interreflection;
+  culling_ = options.culling;
+  mesh_ = options.mesh;
+  solveInterreflection();
+}
+
+void Estimator::solveInterreflection() {
+  interreflection_.reset();
+  if (withInterreflection_) {
+    interreflection_ = std::make_unique<Interreflection>(*clDevice_, *scene_, *engine_, mesh_,
+                                                         EngineOptions{culling_});
+  }
 }
 
 Estimator::~Estimator() = default;
 
 void Estimator::setScene(const Scene& scene) {
   scene_ = &scene;
-  if (engine_) engine_->setScene(scene);
+  if (engine_) {
+    engine_->setScene(scene);
+    solveInterreflection();
+  }
 }
 
-std::vector<double> Estimator::illuminance(std::span<const SamplePoint> points) {
-  if (engine_) return engine_->illuminance(points);
-  return referenceIlluminance(*scene_, points, referenceN_);
+PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
+  if (!engine_) return referenceIlluminance(*scene_, points, referenceN_);
+  PointIlluminance e(engine_->illuminance(points));
+  if (interreflection_) {
+    e.direct = e.total;
+    const std::vector<double> indirect = interreflection_->indirect(points);
+    for (std::size_t i = 0; i < indirect.size(); ++i) e.total[i] += indirect[i];
+  }
+  return e;
 }
 
 IlluminanceEstimator Estimator::function() {

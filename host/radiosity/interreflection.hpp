@@ -1,0 +1,62 @@
+#pragma once
+// Interreflected illuminance: the scene's lit faces as secondary Lambertian sources. The faces
+// are cut into elements (surface_mesh), the transfer between elements is the kernel's exact
+// occluded contour integral averaged over each receiving element (element_transfer), the
+// radiosity equations are solved per RGB channel (radiosity_solver), and the indirect E at any
+// point is the kernel's exact integral over every element at its solved luminance (the final
+// gather: no interpolation between points).
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "cl/device.hpp"
+#include "engine/illuminance_engine.hpp"
+#include "radiosity/radiosity_solver.hpp"
+#include "radiosity/surface_mesh.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+// What the solver did, for summary.json and the terminal.
+struct InterreflectionReport {
+  std::size_t elements = 0;
+  double elementSize = 0.0;              // m, the longest side an element may have
+  std::size_t nodes = 0;                 // quadrature nodes, where the transfer is evaluated
+  double surfaceArea = 0.0;              // m², all elements
+  double residual = 0.0;                 // of the linear solve, relative
+  double meshSeconds = 0.0;              // faces reached, cut into elements
+  double transferSeconds = 0.0;          // element-to-element transfer (kernel)
+  double solveSeconds = 0.0;             // LU factorisation and solve
+  double setupSeconds = 0.0;             // the gather's element scene on the device
+  std::vector<std::string> blackSolids;  // reached by light, no material: black
+};
+
+class Interreflection {
+ public:
+  // Solves the radiosity equations for `scene` (which must outlive this object). `direct`
+  // answers for `scene` (its direct illuminance); its device runs the element kernels too.
+  // `engine` are the options of the element kernels (the transfer and the gather).
+  Interreflection(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
+                  const MeshOptions& mesh = {}, const EngineOptions& engine = {});
+  ~Interreflection();
+
+  // Interreflected E in lx at each point (the photometric sum of the channels).
+  std::vector<double> indirect(std::span<const SamplePoint> points);
+
+  const SurfaceMesh& mesh() const { return mesh_; }
+  const RadiositySolution& solution() const { return solution_; }
+  // Element-average direct E per channel, lx.
+  const Eigen::MatrixX3d& direct() const { return direct_; }
+  const InterreflectionReport& report() const { return report_; }
+
+ private:
+  SurfaceMesh mesh_;
+  Scene elements_;
+  std::unique_ptr<IlluminanceEngine> gather_;
+  Eigen::MatrixX3d direct_;
+  RadiositySolution solution_;
+  InterreflectionReport report_;
+};
+
+}  // namespace penumbra

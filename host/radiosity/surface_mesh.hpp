@@ -1,0 +1,62 @@
+#pragma once
+// The surfaces that exchange light, cut into elements: every face of every solid with a material
+// that light from a source can reach (directly or after reflections), minus the parts other
+// solids cover, cut into convex elements no larger than the element size. Faces without a
+// material are black: they absorb and get no elements.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "geometry/convex_polygon.hpp"
+#include "geometry/sample_point.hpp"
+#include "scene/scene.hpp"
+
+namespace penumbra {
+
+struct MeshOptions {
+  // The longest side of an element, m. Elements are the pieces over which the reflected
+  // luminance is taken as uniform; the work plane's indirect E converges as it shrinks
+  // (docs/method.md, "Interreflection").
+  double elementSize = 0.5;
+  // Quadrature nodes per axis of an element (elementQuadrature): the transfer to an element is
+  // the average of the exact point transfer over these nodes.
+  int quadratureOrder = 4;
+  // Elements where the direct light is uneven are cut in four, up to `refinementLevels` times:
+  // those whose ρ·(Emax - Emin)·area over their nodes exceeds `refinement` times the whole
+  // first reflected flux Σ ρ·E·area.
+  double refinement = 1e-3;
+  int refinementLevels = 3;
+};
+
+struct SurfaceElement {
+  ConvexPolygon polygon;  // counter-clockwise about the face's outward normal
+  int solid = -1;         // index into Scene::solids
+  int face = -1;          // face of that solid
+  Vec3 reflectance = Vec3::Zero();
+  double area = 0.0;  // m²
+};
+
+struct SurfaceMesh {
+  std::vector<SurfaceElement> elements;
+  // The quadrature nodes of every element as receiving points (on the element's solid, facing
+  // out), element i's in [nodeStart[i], nodeStart[i + 1]); weights are area fractions.
+  std::vector<SamplePoint> nodes;
+  std::vector<double> weights;
+  std::vector<std::size_t> nodeStart;
+  // Solids that light can reach but that have no material (black), by name: for a warning.
+  std::vector<std::string> blackSolids;
+
+  double area() const;  // m², all elements
+};
+
+// Faces A and B can exchange light only if each has part of the other strictly in front of it.
+// Starting from the faces that can see a source, every face that can see an already reached
+// face with a material is reached too: a superset of the faces light can get to.
+SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options = {});
+
+// The mesh with every element i where split[i] is set cut into cells of half its longest edge
+// (a square into four), the others kept; nodes placed again with `order` per axis.
+SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, int order,
+                       double tolerance);
+
+}  // namespace penumbra

@@ -1,0 +1,263 @@
+// Interreflection (host/radiosity) on PoCL: the transfer's row sums and reciprocity, energy
+// balance in closed rooms, CIE 171:2006 case 5.8, an independent collocation reference, and the
+// invariants of the total illuminance.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <numbers>
+
+#include "box_room_radiosity.hpp"
+#include "illuminance/estimator.hpp"
+#include "radiosity/element_transfer.hpp"
+#include "radiosity/interreflection.hpp"
+#include "sanitized_build.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_device.hpp"
+#include "test_files.hpp"
+
+namespace penumbra {
+namespace {
+
+using namespace penumbra::testing;
+constexpr double kPi = std::numbers::pi;
+
+// A room of one material `paint` (ρ = 0.5 unless the test sets it on the mesh), one source (a
+// YAML flow map) and `extra` YAML (solids).
+Scene paintedRoom(const TempDir& dir, const std::string& size, const std::string& source,
+                  const std::string& extra = "") {
+  const auto file = dir.path() / "room.yaml";
+  std::ofstream(file) << "penumbra: 1\nmaterials:\n  paint: 0.5\nroom:\n  size: " << size
+                      << "\n  materials: {floor: paint, ceiling: paint, walls: paint}\n"
+                         "sources:\n  - "
+                      << source << "\n"
+                      << extra;
+  return loadScene(file);
+}
+
+// The same with a 0.6 m ceiling panel of 3000 lm.
+Scene closedRoom(const TempDir& dir, const std::string& size, const std::string& extra = "") {
+  return paintedRoom(dir, size,
+                     "{name: panel, rect: {center: [1.3, 1.7, 2.99], size: [0.6, 0.6], normal: "
+                     "[0, 0, -1]}, flux: 3000}",
+                     extra);
+}
+
+void setReflectance(SurfaceMesh& mesh, double rho) {
+  for (SurfaceElement& element : mesh.elements) element.reflectance = Vec3::Constant(rho);
+}
+
+// Σ A·E over the elements, per unit of the whole surface: the area average (lx).
+double areaAverage(const SurfaceMesh& mesh, const Eigen::VectorXd& e) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < mesh.elements.size(); ++i) sum += mesh.elements[i].area * e[i];
+  return sum / mesh.area();
+}
+
+// A scene's interreflection with the default mesh and its transfer matrix, which the tests
+// solve again for other reflectances (the transfer depends on the geometry only).
+struct SolvedRoom {
+  explicit SolvedRoom(const Scene& scene)
+      : direct(cpuDevice(), scene),
+        solved(std::make_unique<Interreflection>(cpuDevice(), scene, direct)),
+        elements(elementScene(scene, solved->mesh())),
+        engine(cpuDevice(), elements),
+        transfer(elementTransfer(engine, solved->mesh())) {}
+  IlluminanceEngine direct;
+  std::unique_ptr<Interreflection> solved;
+  Scene elements;
+  IlluminanceEngine engine;
+  Eigen::MatrixXd transfer;
+};
+
+TEST(Transfer, RowsOfAClosedRoomSumToPiAndReciprocityHolds) {
+  TempDir dir("interreflection");
+  const Scene scene = closedRoom(dir, "[4, 3, 3]");
+  double previousAsymmetry = INFINITY;
+  for (int order : {2, 4, 6}) {
+    const SurfaceMesh mesh = buildSurfaceMesh(scene, MeshOptions{1.0, order});
+    Scene elements = elementScene(scene, mesh);
+    IlluminanceEngine engine(cpuDevice(), elements);
+    const Eigen::MatrixXd t = elementTransfer(engine, mesh);
+    // Each node sees a whole hemisphere of elements: E = π·L exactly, to the kernel's float.
+    for (Eigen::Index i = 0; i < t.rows(); ++i) EXPECT_NEAR(t.row(i).sum(), kPi, 1e-6 * kPi) << i;
+    // A_i T_ij = A_j T_ji to the quadrature's error, which falls as the order grows.
+    double asymmetry = 0.0, flux = 0.0;
+    for (Eigen::Index i = 0; i < t.rows(); ++i)
+      for (Eigen::Index j = 0; j < t.rows(); ++j) {
+        asymmetry += std::abs(mesh.elements[i].area * t(i, j) - mesh.elements[j].area * t(j, i));
+        flux += mesh.elements[i].area * t(i, j);
+      }
+    EXPECT_LT(asymmetry / flux, previousAsymmetry) << order;
+    previousAsymmetry = asymmetry / flux;
+  }
+  EXPECT_LT(previousAsymmetry, 1e-3);
+}
+
+// In a closed room of uniform ρ, the area average of the indirect E over all surfaces is
+// ρ/(1 - ρ) times that of the direct E (every reflected lumen lands on a surface again).
+TEST(Interreflection, ClosedRoomsConserveEnergy) {
+  TempDir dir("interreflection");
+  const std::vector<std::pair<std::string, std::string>> rooms{
+      {"[4, 4, 4]", ""},
+      {"[10, 3, 3]", ""},
+      {"[5, 4, 3]",
+       "solids:\n  - {name: desk, box: {min: [1.0, 1.0, 0.72], max: [2.6, 1.8, 0.75]}, material: "
+       "paint}\n  - {name: cabinet, box: {min: [4.4, 0.0, 0.0], max: [5.0, 1.2, 1.8]}, material: "
+       "paint}\n"},
+  };
+  for (const auto& [size, extra] : rooms) {
+    const Scene scene = closedRoom(dir, size, extra);
+    const SolvedRoom room(scene);
+    SurfaceMesh mesh = room.solved->mesh();
+    const Eigen::MatrixXd& t = room.transfer;
+    const double directAverage = areaAverage(mesh, room.solved->direct().col(1));
+    for (double rho : {0.2, 0.5, 0.8, 0.95}) {
+      setReflectance(mesh, rho);
+      const RadiositySolution s = solveRadiosity(t, mesh, room.solved->direct());
+      EXPECT_LT(s.residual, 1e-9);
+      const double expected = rho / (1.0 - rho) * directAverage;
+      EXPECT_NEAR(areaAverage(mesh, s.indirect.col(1)), expected, 1e-4 * expected)
+          << size << " rho " << rho;
+    }
+  }
+}
+
+// CIE 171:2006 test case 5.8: a 4 m cube, an isotropic source of 10 000 lm at its centre (here a
+// small luminous sphere: its flux is what it emits), every surface of reflectance ρ. The average
+// indirect illuminance over the 96 m² is ρΦ/(S(1 - ρ)).
+TEST(Interreflection, Cie171Case5_8) {
+  TempDir dir("interreflection");
+  const Scene scene = paintedRoom(
+      dir, "[4, 4, 4]", "{name: lamp, sphere: {center: [2, 2, 2], radius: 0.05}, flux: 10000}");
+  const SolvedRoom room(scene);
+  SurfaceMesh mesh = room.solved->mesh();
+  // The room's six inner faces, to the geometry's tolerance (slivers thinner than 1e-9 of the
+  // scene's size are dropped where the slabs overlap).
+  ASSERT_NEAR(mesh.area(), 96.0, 1e-7 * 96.0);
+  const Eigen::MatrixXd& t = room.transfer;
+  const std::vector<std::pair<double, double>> published{
+      {0.05, 5.48}, {0.1, 11.6}, {0.2, 26.0}, {0.3, 44.6}, {0.4, 69.4}, {0.5, 104},
+      {0.6, 156},   {0.7, 243},  {0.8, 417},  {0.9, 937},  {0.95, 1979}};
+  for (const auto& [rho, rounded] : published) {
+    setReflectance(mesh, rho);
+    const RadiositySolution s = solveRadiosity(t, mesh, room.solved->direct());
+    const double expected = rho * 10000.0 / (96.0 * (1.0 - rho));
+    ASSERT_NEAR(expected, rounded, 0.006 * rounded);  // the published figures, to 3 digits
+    EXPECT_NEAR(areaAverage(mesh, s.indirect.col(1)), expected, 1e-3 * expected) << rho;
+  }
+}
+
+// An empty box room against piecewise-constant collocation in double (box_room_radiosity.hpp),
+// extrapolated from three patch sizes: closer as the elements shrink, and within 1e-3 of it on
+// the work plane with elements of 0.25 m.
+TEST(Interreflection, BoxRoomAgainstCollocation) {
+  TempDir dir("interreflection");
+  const Scene scene = paintedRoom(dir, "[4, 3, 3]",
+                                  "{name: panel, rect: {center: [1.3, 1.7, 2.99], size: [0.6, "
+                                  "0.6], normal: [0, 0, -1]}, luminance: 1000}");
+  std::vector<SamplePoint> points;
+  for (double x : {0.5, 1.3, 2.0, 3.5})
+    for (double y : {0.5, 1.7, 2.5}) points.push_back({Vec3(x, y, 0.8), Vec3::UnitZ(), -1});
+
+  // Collocation converges like n^-p with p near 1.5: the limit from n, 1.5n and 2n.
+  // The sanitizer build checks the code path on a coarse reference (its dense LU runs slowly
+  // under ASan); the Release build holds the numbers.
+  const std::array<int, 3> n = kSanitizedBuild ? std::array{4, 6, 8} : std::array{16, 24, 32};
+  std::vector<std::vector<double>> byN;
+  for (int patches : n) {
+    const BoxRoomReference reference(BoxRoomCase{}, patches);
+    byN.emplace_back();
+    for (const SamplePoint& p : points)
+      byN.back().push_back(reference.totalIlluminance(p.position, p.normal));
+  }
+  std::vector<double> limit;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const double d1 = byN[0][k] - byN[1][k], d2 = byN[1][k] - byN[2][k];
+    // d2/d1 = (1.5^-p - 2^-p) / (1 - 1.5^-p) fixes p; the remaining error is d2·2^-p/(1.5^-p -
+    // 2^-p).
+    double lo = 0.5, hi = 4.0;
+    for (int it = 0; it < 60; ++it) {
+      const double p = 0.5 * (lo + hi);
+      const double ratio = (std::pow(1.5, -p) - std::pow(2.0, -p)) / (1.0 - std::pow(1.5, -p));
+      (ratio > d2 / d1 ? lo : hi) = p;
+    }
+    const double p = 0.5 * (lo + hi);
+    limit.push_back(byN[2][k] - d2 * std::pow(2.0, -p) / (std::pow(1.5, -p) - std::pow(2.0, -p)));
+  }
+
+  IlluminanceEngine direct(cpuDevice(), scene);
+  const std::vector<double> e0 = direct.illuminance(points);
+  double previous = INFINITY;
+  for (double size : {0.5, 0.25}) {
+    MeshOptions options;
+    options.elementSize = size;
+    Interreflection solved(cpuDevice(), scene, direct, options);
+    const std::vector<double> indirect = solved.indirect(points);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k)
+      worst = std::max(worst, std::abs(e0[k] + indirect[k] - limit[k]) / limit[k]);
+    std::printf("element size %.3f m: %zu elements, worst relative difference %.2e\n", size,
+                solved.mesh().elements.size(), worst);
+    if (kSanitizedBuild) continue;
+    if (size == 0.25) EXPECT_LT(worst, 1e-3);
+    EXPECT_LT(worst, previous);
+    previous = worst;
+  }
+}
+
+// The total through Estimator: ρ = 0 gives the direct E bit for bit, a higher ρ never lowers E,
+// twice the light gives twice E.
+class TotalIlluminance : public ::testing::Test {
+ protected:
+  static Scene office(const ParameterValues& values = {}) {
+    return loadScene(std::filesystem::path(PENUMBRA_SOURCE_DIR) / "data/office.yaml", values);
+  }
+  static std::vector<SamplePoint> workPlane(const Scene& scene) {
+    std::vector<SamplePoint> points;
+    for (const CalculationGrid& grid : scene.grids)
+      for (std::size_t i = 0; i < grid.size(); ++i)
+        points.push_back({grid.position(i), grid.normal(i), -1});
+    return points;
+  }
+  static PointIlluminance total(const Scene& scene, const std::vector<SamplePoint>& points) {
+    EstimatorOptions options;
+    options.device = "cpu";
+    Estimator estimator(options, scene);
+    return estimator.illuminance(points);
+  }
+};
+
+TEST_F(TotalIlluminance, BlackRoomGivesTheDirectLight) {
+  Scene scene = office();
+  for (Material& m : scene.materials) m.reflectance = Vec3::Zero();
+  const std::vector<SamplePoint> points = workPlane(scene);
+  const PointIlluminance e = total(scene, points);
+  EstimatorOptions directOnly;
+  directOnly.device = "cpu";
+  directOnly.interreflection = false;
+  const PointIlluminance d = Estimator(directOnly, scene).illuminance(points);
+  EXPECT_TRUE(d.direct.empty());
+  ASSERT_EQ(e.total.size(), d.total.size());
+  for (std::size_t i = 0; i < e.total.size(); ++i) {
+    EXPECT_EQ(e.total[i], d.total[i]) << i;
+    EXPECT_EQ(e.direct[i], d.total[i]) << i;
+  }
+}
+
+TEST_F(TotalIlluminance, HigherReflectanceNeverLowersAndLightScales) {
+  const Scene base = office();
+  const std::vector<SamplePoint> points = workPlane(base);
+  const PointIlluminance e = total(base, points);
+  const PointIlluminance brighterFloor = total(office({{"floor_reflectance", 0.5}}), points);
+  const PointIlluminance twice =
+      total(office({{"sky_luminance_cdm2", 8000}, {"panel_flux_lm", 6800}}), points);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    EXPECT_GT(e.total[i], e.direct[i]) << i;
+    EXPECT_GE(brighterFloor.total[i], e.total[i]) << i;
+    EXPECT_EQ(brighterFloor.direct[i], e.direct[i]) << i;
+    EXPECT_NEAR(twice.total[i], 2.0 * e.total[i], 1e-12 * e.total[i]) << i;
+  }
+}
+
+}  // namespace
+}  // namespace penumbra
