@@ -206,6 +206,36 @@ TEST(Cli, ASceneErrorExitsWithTwoAndWritesNothing) {
   EXPECT_EQ(left.size(), 1u) << "only scene.yaml";
 }
 
+TEST(Cli, ASourceThatLightsNothingIsWarnedInTheTerminalAndTheSummary) {
+  TempDir dir("penumbra-cli-test");
+  std::string text = kScene;
+  text.replace(text.find("normal: [0.0, 0.0, -1.0]"), 24, "normal: [0.0, 0.0, 1.0]");
+  writeScene(dir.path() / "scene.yaml", text);
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string expected =
+      "scene.yaml:8: warning: sources[0]: source 'panel' lights nothing: it emits towards [0, 0, "
+      "1]";
+  EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  ASSERT_EQ(summary["warnings"].size(), 1u);
+  EXPECT_TRUE(summary["warnings"][0].get<std::string>().starts_with(expected))
+      << summary["warnings"];
+  // Nothing is lit.
+  EXPECT_EQ(summary["grids"][0]["Emax_lx"].get<double>(), 0.0);
+}
+
+TEST(Cli, AValidSceneHasAnEmptyWarningsList) {
+  TempDir dir("penumbra-cli-test");
+  writeScene(dir.path() / "scene.yaml");
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  EXPECT_TRUE(summary["warnings"].is_array());
+  EXPECT_TRUE(summary["warnings"].empty());
+}
+
 TEST(Cli, AMissingSceneFileIsAnError) {
   TempDir dir("penumbra-cli-test");
   const Result r = runPenumbra(dir.path(), "grid missing.yaml -o out --reference");

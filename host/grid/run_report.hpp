@@ -37,6 +37,8 @@ struct RunReport {
   double loadSeconds = 0.0;         // reading and validating the scene
   double setupSeconds = 0.0;        // device selection, program build, scene upload
   double totalSeconds = 0.0;        // the whole run before writing
+  // The scene's warnings, each as printed ("office.yaml:31: warning: sources[1]: ...").
+  std::vector<std::string> warnings;
   std::vector<GridReport> grids;
 };
 

@@ -17,6 +17,9 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
   report.estimator = estimator.name();
   report.referenceN = estimator.referenceN();
   report.device = estimator.device();
+  for (const SceneWarning& warning : scene.warnings) {
+    report.warnings.push_back(warningText(scene.file, warning));
+  }
   return report;
 }
 

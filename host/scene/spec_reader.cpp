@@ -174,6 +174,7 @@ SourceSpec readSource(const Reader& reader, const Field& field) {
 
   SourceSpec spec;
   spec.name = reader.text(map.require("name"));
+  spec.where = field.where;
   std::tie(spec.shape, spec.shapeWhere) = readShape(reader, map, shapeKey);
   const std::optional<Field> luminance = map.find("luminance");
   const std::optional<Field> flux = map.find("flux");
