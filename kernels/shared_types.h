@@ -113,7 +113,9 @@ typedef struct {
 /* Something a camera ray can hit (kernels/visibility.cl). A solid is the intersection of its
  * planes' closed insides (n·x <= w), plane i being face i, whose face id is firstFaceId + i. A
  * polygon (an area source) is its first plane, the emitting side facing +n, cut by the
- * following side planes; it is seen from its emitting side only and has one face id. */
+ * following side planes; it is seen from its emitting side only and has one face id. A
+ * polyhedron source is a solid whose faces emit; sources (polygons and polyhedra) win depth
+ * ties with the solids' faces they lie on. */
 typedef struct {
   pn_int firstPlane, planeCount;
   pn_int firstFaceId;
@@ -122,6 +124,7 @@ typedef struct {
 
 #define PN_VISIBLE_SOLID 0
 #define PN_VISIBLE_POLYGON 1
+#define PN_VISIBLE_SOURCE_SOLID 2
 #define PN_VISIBILITY_TILE 16 /* screen tiles are 16 × 16 samples */
 
 #endif

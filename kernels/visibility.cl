@@ -10,8 +10,15 @@
  * in scene order), so a sample tests only its tile's list.
  *
  * Output per sample: the face id (0: nothing is hit) and the ray parameter t of the hit (the
- * hit point is eye + t·direction, with the unnormalised direction above). Ties in t go to the
- * earlier object in scene order, which is also the tile list's order. */
+ * hit point is eye + t·direction, with the unnormalised direction above).
+ *
+ * Ties in t: a source wins against a solid's face it lies on (a panel flush with the ceiling
+ * would otherwise lose to the ceiling, in whichever order they come, since both give the same t
+ * up to float rounding): a source counts up to PN_EPS_REL·t behind the nearest solid, and a solid
+ * replaces a source only when it is nearer by more than that. Other ties go to the earlier
+ * object in scene order, which is also the tile list's order.
+ *
+ * Build options from the host: -DPN_EPS_REL=<Tolerance::kKernelRelative>. */
 
 /* Ray against the intersection of half-spaces n·x <= w: the entering parameter and the plane
  * it enters through, or -1 when the ray misses, starts inside, or enters beyond t_best. */
@@ -73,15 +80,22 @@ __kernel void visibility(const float4 eye, const float4 forward, const float4 ri
   const int tile = (y / PN_VISIBILITY_TILE) * tiles_across + x / PN_VISIBILITY_TILE;
   float t_best = INFINITY;
   uint best = 0;
+  bool best_is_source = false;
   for (int k = tile_start[tile]; k < tile_start[tile + 1]; ++k) {
     PnVisibleObject obj = objects[tile_objects[k]];
+    const bool source = obj.kind != PN_VISIBLE_SOLID;
+    /* How far away a hit may be and still be the nearest (the tie rule above). */
+    const float limit = source == best_is_source ? t_best
+                        : source                 ? t_best * (1.0f + PN_EPS_REL)
+                                                 : t_best * (1.0f - PN_EPS_REL);
     float t = 0.0f;
-    int face = obj.kind == PN_VISIBLE_SOLID
-                   ? hit_solid(o, d, planes, obj.firstPlane, obj.planeCount, t_best, &t)
-                   : hit_polygon(o, d, planes, obj.firstPlane, obj.planeCount, t_best, &t);
+    int face = obj.kind == PN_VISIBLE_POLYGON
+                   ? hit_polygon(o, d, planes, obj.firstPlane, obj.planeCount, limit, &t)
+                   : hit_solid(o, d, planes, obj.firstPlane, obj.planeCount, limit, &t);
     if (face >= 0) {
       t_best = t;
       best = (uint)(obj.firstFaceId + face);
+      best_is_source = source;
     }
   }
   face_ids[g] = best;

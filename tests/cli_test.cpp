@@ -57,7 +57,9 @@ std::vector<CsvRow> readCsv(const fs::path& file) {
   if (all.empty()) return rows;
   // With interreflection (the default) E_direct_lx and E_indirect_lx follow E_lx.
   const bool withParts = all[0] == "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside";
-  if (!withParts) EXPECT_EQ(all[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  if (!withParts) {
+    EXPECT_EQ(all[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
+  }
   const std::size_t fields = withParts ? 10 : 8;
   for (std::size_t i = 1; i < all.size(); ++i) {
     std::vector<std::string> f(1);
@@ -219,7 +221,9 @@ TEST(Cli, TotalIlluminanceBesideItsDirectPart) {
     EXPECT_EQ(t[7], d[6]) << i;  // the same digits
     const double e = std::stod(t[6]), eDirect = std::stod(t[7]), eIndirect = std::stod(t[8]);
     EXPECT_EQ(eIndirect, e - eDirect) << i;
-    if (t[9].empty()) EXPECT_GT(eIndirect, 0.0) << i;  // the walls light every floor point
+    if (t[9].empty()) {
+      EXPECT_GT(eIndirect, 0.0) << i;  // the walls light every floor point
+    }
   }
   const auto summary = nlohmann::json::parse(readText(dir.path() / "total" / "summary.json"));
   EXPECT_EQ(summary["illuminance"], "total (direct + interreflected)");
@@ -270,6 +274,36 @@ TEST(Cli, ASceneErrorExitsWithTwoAndWritesNothing) {
   std::vector<fs::path> left;
   for (const auto& entry : fs::directory_iterator(dir.path())) left.push_back(entry.path());
   EXPECT_EQ(left.size(), 1u) << "only scene.yaml";
+}
+
+TEST(Cli, ASourceThatLightsNothingIsWarnedInTheTerminalAndTheSummary) {
+  TempDir dir("penumbra-cli-test");
+  std::string text = kScene;
+  text.replace(text.find("normal: [0.0, 0.0, -1.0]"), 24, "normal: [0.0, 0.0, 1.0]");
+  writeScene(dir.path() / "scene.yaml", text);
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string expected =
+      "scene.yaml:8: warning: sources[0]: source 'panel' lights nothing: it emits towards [0, 0, "
+      "1]";
+  EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  ASSERT_EQ(summary["warnings"].size(), 1u);
+  EXPECT_TRUE(summary["warnings"][0].get<std::string>().starts_with(expected))
+      << summary["warnings"];
+  // Nothing is lit.
+  EXPECT_EQ(summary["grids"][0]["Emax_lx"].get<double>(), 0.0);
+}
+
+TEST(Cli, AValidSceneHasAnEmptyWarningsList) {
+  TempDir dir("penumbra-cli-test");
+  writeScene(dir.path() / "scene.yaml");
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference --reference-n 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
+  const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  EXPECT_TRUE(summary["warnings"].is_array());
+  EXPECT_TRUE(summary["warnings"].empty());
 }
 
 TEST(Cli, AMissingSceneFileIsAnError) {

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "test_files.hpp"
@@ -355,6 +356,25 @@ TEST(SummaryTable, HasTheColumnsAndOneRowPerGrid) {
   EXPECT_EQ(total[0], "E: total illuminance (direct + interreflected)");
   EXPECT_NE(total[1].find("Eavg direct [lx]"), std::string::npos) << total[1];
   EXPECT_NE(total[3].find("123.5"), std::string::npos) << total[3];
+}
+
+TEST(SummaryTable, UniformityOnlyForAreas) {
+  RunReport run = handMadeRun();
+  run.grids[0].kind = GridKind::Rect;  // desk top stays a point list
+  const auto rows = lines(summaryTable(run));
+  ASSERT_GE(rows.size(), 5u);  // what E is, the header, the rule, two grids
+  // The last two columns: U0 = Emin/Eavg and Ud = Emin/Emax for the area, "-" for the sensors.
+  const auto lastTwo = [](const std::string& row) {
+    const std::size_t ud = row.rfind(" | ");
+    const std::size_t u0 = row.rfind(" | ", ud - 1);
+    const auto trim = [](std::string text) { return text.substr(text.find_first_not_of(' ')); };
+    return std::make_pair(trim(row.substr(u0 + 3, ud - u0 - 3)), trim(row.substr(ud + 3)));
+  };
+  const double eAvg = (512.3456789012345 + 1.0 / 7.0) / 2.0;
+  EXPECT_EQ(lastTwo(rows[3]),
+            std::make_pair(fmt::format("{:.3f}", (1.0 / 7.0) / eAvg),
+                           fmt::format("{:.3f}", (1.0 / 7.0) / 512.3456789012345)));
+  EXPECT_EQ(lastTwo(rows[4]), std::make_pair(std::string("-"), std::string("-")));
 }
 
 }  // namespace

@@ -4,11 +4,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <numbers>
+#include <sstream>
 
 #include "output/image_files.hpp"
 #include "penumbra_process.hpp"
+#include "radiance_picture.hpp"
 
 namespace penumbra {
 namespace {
@@ -78,6 +84,74 @@ TEST(RenderCli, WritesEveryFileWithViewAndUnitsInTheHeaders) {
   EXPECT_EQ(json["views"][0]["width_px"], 64);
   EXPECT_LT(json["views"][0]["exact_share"].get<double>(), 1.0);
   EXPECT_NE(r.out.find("corner"), std::string::npos) << r.out;
+}
+
+// Radiance's VIEW= options as numbers by name: "-vp 1 2 3 -vh 70" → {"-vp": [1, 2, 3], ...}.
+std::map<std::string, std::vector<double>> viewOptions(const std::string& text) {
+  std::map<std::string, std::vector<double>> options;
+  std::istringstream in(text);
+  std::string word, current;
+  while (in >> word) {
+    if (word.starts_with("-v")) {  // an option; "-0.6" is a number
+      current = word;
+      options[current];
+    } else {
+      options[current].push_back(std::stod(word));
+    }
+  }
+  return options;
+}
+
+TEST(RenderCli, TheRadiancePictureReadsBackByRadiancesRules) {
+  TempDir dir("penumbra-render-cli");
+  writeScene(dir.path());
+  const Result r = runPenumbra(dir.path(), "render scene.yaml --view corner -o out");
+  if (r.status == 1 && r.err.find("device") != std::string::npos)
+    GTEST_SKIP() << "no OpenCL device: " << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const RadiancePicture picture = readRadiancePicture(dir.path() / "out" / "corner.hdr");
+  EXPECT_EQ(picture.value("FORMAT"), "32-bit_rle_rgbe");
+  EXPECT_EQ(picture.value("EXPOSURE"), "1");
+  EXPECT_EQ(picture.value("penumbra:view"), "corner");
+  EXPECT_EQ(picture.value("penumbra:scene"), "scene.yaml");
+  EXPECT_NE(picture.value("penumbra:units").find("179"), std::string::npos);
+
+  // The camera of the view: eye [3.8, 3.8, 1.6], target [1.5, 1.5, 0.3], fov 70, 64 × 48.
+  auto view = viewOptions(picture.value("VIEW"));
+  EXPECT_TRUE(view.contains("-vtv")) << picture.value("VIEW");
+  EXPECT_EQ(view["-vp"], (std::vector<double>{3.8, 3.8, 1.6}));
+  const Vec3 direction = (Vec3(1.5, 1.5, 0.3) - Vec3(3.8, 3.8, 1.6)).normalized();
+  ASSERT_EQ(view["-vd"].size(), 3u);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(view["-vd"][i], direction[i], 1e-12);
+  EXPECT_EQ(view["-vu"], (std::vector<double>{0, 0, 1}));
+  EXPECT_EQ(view["-vh"], (std::vector<double>{70}));
+  // Square pixels: the half-angles' tangents are in the ratio of the sides.
+  ASSERT_EQ(view["-vv"].size(), 1u);
+  const double vv = view["-vv"][0] * std::numbers::pi / 180.0;
+  EXPECT_NEAR(std::tan(vv / 2.0), std::tan(35.0 * std::numbers::pi / 180.0) * 48.0 / 64.0, 1e-12);
+
+  // Radiance at 179 lm/W: pixel × 179 is the .exr's cd/m², within half a mantissa step of the
+  // pixel's largest channel (a step is at most 1/128 of it).
+  const RgbImage luminance = readRgbExr(dir.path() / "out" / "corner.exr");
+  ASSERT_EQ(picture.width, luminance.width);
+  ASSERT_EQ(picture.height, luminance.height);
+  double worst = 0.0;
+  int lit = 0;
+  for (std::size_t p = 0; p < luminance.rgb.size(); p += 3) {
+    const double largest = std::max({luminance.rgb[p], luminance.rgb[p + 1], luminance.rgb[p + 2]});
+    if (largest == 0.0) {
+      EXPECT_EQ(picture.rgb[p], 0.0f);
+      continue;
+    }
+    ++lit;
+    for (int c = 0; c < 3; ++c) {
+      worst =
+          std::max(worst, std::abs(179.0 * picture.rgb[p + c] - luminance.rgb[p + c]) / largest);
+    }
+  }
+  EXPECT_GT(lit, 64 * 48 / 4);
+  EXPECT_LE(worst, (1.0 + 1e-6) / 256.0);
+  std::cout << "worst |179 · pixel − L| / L_max over " << lit << " pixels: " << worst << "\n";
 }
 
 TEST(RenderCli, AnUnknownViewIsAnErrorThatListsTheViewsAndWritesNothing) {

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
 
@@ -246,6 +248,70 @@ TEST(RenderedIlluminance, AVisibleSourceShowsItsLuminanceInItsColour) {
   EXPECT_NEAR(centre[2] / centre[0], 0.6, 1e-6);
   EXPECT_EQ(rendered.illuminance.at(16, 16), 0.0f);
   EXPECT_EQ(rendered.faces.at(16, 16), scene.solids[0].shape.faces().size() + 1);
+}
+
+// A source flush with a solid's face (a ceiling panel at the ceiling plane, a wall panel on the
+// wall) lies at the same depth as that face: the source must show, the face around it must not.
+// Pixels whose ray meets the source's plane clearly inside the source (more than 1 % of its size
+// from its edges) show its luminance and face id; those clearly outside show the solid.
+void expectFlushSourceVisible(const Scene& scene, const View& view, const Plane& plane,
+                              const std::function<bool(const Vec3&, double)>& insideSource) {
+  Renderer renderer(cpuDevice(), scene);
+  const RenderedView rendered = renderer.render(view, RenderOptions{});
+  const Camera camera = Camera::forView(view);
+  uint32_t sourceId = 1;
+  for (const Solid& solid : scene.solids) sourceId += solid.shape.faces().size();
+  const double luminance = scene.sources.front().luminance;
+  int inside = 0, outside = 0;
+  for (int y = 0; y < view.height; ++y)
+    for (int x = 0; x < view.width; ++x) {
+      const Vec3 d = camera.direction(x, y);
+      const double t = (plane.offset - plane.normal.dot(camera.eye)) / plane.normal.dot(d);
+      const Vec3 hit = camera.eye + t * d;
+      if (insideSource(hit, 0.01)) {
+        ++inside;
+        EXPECT_EQ(rendered.faces.at(x, y), sourceId) << "pixel (" << x << ", " << y << ")";
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(rendered.luminance.pixel(x, y)[c], luminance, 1e-6 * luminance);
+      } else if (!insideSource(hit, -0.01)) {
+        ++outside;
+        EXPECT_LT(rendered.faces.at(x, y), sourceId) << "pixel (" << x << ", " << y << ")";
+      }
+    }
+  EXPECT_GT(inside, view.width * view.height / 10);
+  EXPECT_GT(outside, view.width * view.height / 10);
+}
+
+TEST(Visibility, AFlushCeilingPanelWinsTheTieWithTheCeiling) {
+  Scene scene;
+  scene.solids.push_back(boxSolid({-3, -3, -0.1}, {3, 3, 0}, "floor"));
+  scene.solids.push_back(boxSolid({-3, -3, 2.5}, {3, 3, 2.7}, "ceiling"));
+  scene.sources.push_back(ceilingRect(-0.5, -0.5, 0.5, 0.5, 2.5, 2000.0));
+  const Plane ceiling{-Vec3::UnitZ(), -2.5};
+  // |x|, |y| within the panel less `margin` of its 1 m side.
+  const auto inPanel = [](const Vec3& p, double margin) {
+    return std::max(std::abs(p.x()), std::abs(p.y())) < 0.5 - margin;
+  };
+  // Straight up, and obliquely, where the rays cross the plane at other float roundings.
+  expectFlushSourceVisible(scene,
+                           makeView({0.0, 0.0, 0.5}, {0.0, 0.0, 2.5}, 48, 48, 40.0, Vec3::UnitY()),
+                           ceiling, inPanel);
+  expectFlushSourceVisible(scene, makeView({-1.7, -1.3, 1.2}, {0.1, 0.05, 2.5}, 64, 48, 50.0),
+                           ceiling, inPanel);
+}
+
+TEST(Visibility, AFlushWallPanelWinsTheTieWithTheWall) {
+  Scene scene;
+  scene.solids.push_back(boxSolid({-0.2, -3, 0}, {0, 3, 3}, "wall"));
+  // In the wall's face x = 0, emitting into +x: vertices counter-clockwise about +x.
+  scene.sources.push_back(
+      areaSource({{0, -0.4, 1.1}, {0, 0.4, 1.1}, {0, 0.4, 1.9}, {0, -0.4, 1.9}}, 800.0));
+  const Plane wall{-Vec3::UnitX(), 0.0};
+  const auto inPanel = [](const Vec3& p, double margin) {
+    return std::abs(p.y()) < 0.4 - margin && std::abs(p.z() - 1.5) < 0.4 - margin;
+  };
+  expectFlushSourceVisible(scene, makeView({2.3, 1.1, 1.3}, {0.0, 0.0, 1.5}, 64, 48, 40.0), wall,
+                           inPanel);
 }
 
 struct IntervalFigures {

@@ -861,6 +861,27 @@ solids:
               3, "solids[0]", "needs a shape: one of box, prism, hull");
 }
 
+TEST(Errors, AMisspeltShapeKeyIsNamed) {
+  expectError(R"(penumbra: 1
+solids:
+  - name: desk
+    bx: {min: [0, 0, 0], max: [1, 1, 1]}
+)",
+              4, "solids[0].bx", "unknown key 'bx'; a solid needs a shape: one of box, prism");
+  expectError(R"(penumbra: 1
+sources:
+  - {name: panel, rct: {center: [1, 1, 2.8], size: [1, 1], normal: [0, 0, -1]}, luminance: 1}
+)",
+              3, "sources[0].rct", "unknown key 'rct'; a source needs a shape: one of");
+}
+
+TEST(Errors, ATabInTheIndentationIsNamed) {
+  expectError("penumbra: 1\nsolids:\n  - name: desk\n\tbox: {min: [0, 0, 0], max: [1, 1, 1]}\n", 4,
+              "", "indented with a tab, and YAML does not allow tabs in indentation");
+  // A tab elsewhere in a valid file is fine.
+  EXPECT_NO_THROW(parseScene("penumbra: 1\nmaterials: {paint:\t0.8}\n", "test.yaml"));
+}
+
 TEST(Errors, MessageNamesFileLineAndKey) {
   const SceneError e = errorOf(
       "penumbra: 1\nsources: [{name: p, polygon: [[0,0,0],[1,0,0],[0,1,0]], luminance: -1}]\n",

@@ -10,6 +10,7 @@
 
 #include "cli/exit_status.hpp"
 #include "cli/progress.hpp"
+#include "cli/scene_warnings.hpp"
 #include "cli/version.hpp"
 #include "grid/run_report.hpp"
 #include "grid/scene_grids.hpp"
@@ -64,6 +65,7 @@ int run(const GridOptions& options) {
   const Scene scene = loadScene(options.scene, options.parameters);
   const double loadSeconds = secondsSince(start);
   const std::vector<const CalculationGrid*> grids = selectGrids(scene, options.grids);
+  if (!options.quiet) printSceneWarnings(scene);
   if (grids.empty() && !options.quiet) {
     fmt::print(stderr, "penumbra: warning: {} has no calculation grids\n", options.scene.string());
   }

@@ -8,6 +8,7 @@
 #include "cl/device.hpp"
 #include "cli/exit_status.hpp"
 #include "cli/render_progress.hpp"
+#include "cli/scene_warnings.hpp"
 #include "cli/version.hpp"
 #include "output/render_files.hpp"
 #include "output/staged_directory.hpp"
@@ -47,6 +48,7 @@ int run(const RenderCommandOptions& options) {
   const auto start = Clock::now();
   checkOutputTarget(options.output);
   const Scene scene = loadScene(options.scene, options.parameters);
+  if (!options.quiet) printSceneWarnings(scene);
   const std::vector<const View*> views = selectViews(scene, options);
 
   compute::Device device = compute::Device::select(options.device);

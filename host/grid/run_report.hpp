@@ -43,6 +43,8 @@ struct RunReport {
   double totalSeconds = 0.0;        // the whole run before writing
   // The interreflection solver's report; empty when the run is direct light only.
   std::optional<InterreflectionReport> interreflection;
+  // The scene's warnings, each as printed ("office.yaml:31: warning: sources[1]: ...").
+  std::vector<std::string> warnings;
   std::vector<GridReport> grids;
 };
 

@@ -20,6 +20,9 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
   if (const InterreflectionReport* solved = estimator.interreflection()) {
     report.interreflection = *solved;
   }
+  for (const SceneWarning& warning : scene.warnings) {
+    report.warnings.push_back(warningText(scene.file, warning));
+  }
   return report;
 }
 

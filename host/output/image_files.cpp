@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstring>
+#include <fstream>
 #include <functional>
 #include <stdexcept>
 
@@ -25,6 +26,18 @@ fs::path temporaryName(const fs::path& path) {
          fmt::format(".{}.partial-{}{}", path.stem().string(), getpid(), path.extension().string());
 }
 
+// The complete file at `temporary` takes the name `path`; on failure it is removed.
+void moveIntoPlace(const fs::path& temporary, const fs::path& path) {
+  std::error_code renameError;
+  fs::rename(temporary, path, renameError);
+  if (renameError) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error(
+        fmt::format("cannot write {}: {}", path.string(), renameError.message()));
+  }
+}
+
 void writeImage(const fs::path& path, ImageSpec spec, const void* pixels,
                 const ImageMetadata& metadata) {
   for (const auto& [name, value] : metadata) spec.attribute(name, value);
@@ -42,14 +55,7 @@ void writeImage(const fs::path& path, ImageSpec spec, const void* pixels,
     throw std::runtime_error(fmt::format("cannot write {}: {}", path.string(),
                                          error.empty() ? output->geterror() : error));
   }
-  std::error_code renameError;
-  fs::rename(temporary, path, renameError);
-  if (renameError) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    throw std::runtime_error(
-        fmt::format("cannot write {}: {}", path.string(), renameError.message()));
-  }
+  moveIntoPlace(temporary, path);
 }
 
 ImageSpec floatSpec(int width, int height, int channels) {
@@ -108,10 +114,20 @@ void writeFaceIdExr(const fs::path& path, const FaceIdImage& image, const ImageM
   writeImage(path, spec, image.ids.data(), metadata);
 }
 
-void writeRadianceHdr(const fs::path& path, const RgbImage& image, const ImageMetadata& metadata) {
-  checkSize(path, image.width, image.height, image.rgb.size(), 3);
-  writeImage(path, ImageSpec(image.width, image.height, 3, TypeDesc::FLOAT), image.rgb.data(),
-             metadata);
+void writeRadianceHdr(const fs::path& path, const RgbImage& luminance,
+                      const RadianceHeader& header) {
+  checkSize(path, luminance.width, luminance.height, luminance.rgb.size(), 3);
+  const std::string bytes = encodeRadianceHdr(luminance, header);
+  const fs::path temporary = temporaryName(path);
+  std::ofstream out(temporary, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) {
+    std::error_code ignored;
+    fs::remove(temporary, ignored);
+    throw std::runtime_error(fmt::format("cannot write {}", path.string()));
+  }
+  moveIntoPlace(temporary, path);
 }
 
 void writePng(const fs::path& path, const DisplayImage& image, const ImageMetadata& metadata) {

@@ -6,12 +6,14 @@
 //   <view>.exr            linear RGB, 32-bit float, channels R G B (cd/m² for renders)
 //   <view>.<aov>.exr      one 32-bit float channel named after the AOV (e.g. "E" in lx)
 //   <view>.faceid.exr     one 32-bit unsigned integer channel "id" (FaceIdImage)
-//   <view>.hdr            Radiance RGBE (about 1 % precision: a viewer's copy, not for numbers)
+//   <view>.hdr            Radiance RGBE of radiance, L / 179 (about 1 % precision), with the
+//                         camera as VIEW= (radiance_hdr.hpp; written without OpenImageIO)
 //   <view>.png            8-bit display values
 #include <filesystem>
 #include <string>
 
 #include "image/images.hpp"
+#include "output/radiance_hdr.hpp"
 
 namespace penumbra {
 
@@ -21,8 +23,9 @@ void writeScalarExr(const std::filesystem::path& path, const ScalarImage& image,
                     const std::string& channel, const ImageMetadata& metadata = {});
 void writeFaceIdExr(const std::filesystem::path& path, const FaceIdImage& image,
                     const ImageMetadata& metadata = {});
-void writeRadianceHdr(const std::filesystem::path& path, const RgbImage& image,
-                      const ImageMetadata& metadata = {});
+// `luminance` in cd/m²; the file holds radiance, L / 179 (radiance_hdr.hpp says why).
+void writeRadianceHdr(const std::filesystem::path& path, const RgbImage& luminance,
+                      const RadianceHeader& header = {});
 void writePng(const std::filesystem::path& path, const DisplayImage& image,
               const ImageMetadata& metadata = {});
 

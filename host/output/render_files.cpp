@@ -36,6 +36,9 @@ ImageMetadata viewMetadata(const RenderReport& report, const View& view, const s
           {"penumbra:units", units}};
 }
 
+// Radiance's convention (radiance_hdr.hpp): its tools multiply by 179 to give cd/m².
+constexpr const char* kRadianceUnits = "W/(sr m2), radiance at 179 lm/W: cd/m2 = 179 x value";
+
 }  // namespace
 
 std::string viewFileStem(const std::string& viewName) {
@@ -104,7 +107,9 @@ std::vector<std::string> writeRenderFiles(const RenderReport& report,
     const RenderedView& r = files.rendered;
     const std::string stem = viewFileStem(r.view.name);
     writeRgbExr(dir / (stem + ".exr"), r.luminance, viewMetadata(report, r.view, "cd/m2"));
-    writeRadianceHdr(dir / (stem + ".hdr"), r.luminance, viewMetadata(report, r.view, "cd/m2"));
+    writeRadianceHdr(dir / (stem + ".hdr"), r.luminance,
+                     RadianceHeader{r.view, "penumbra " + report.version,
+                                    viewMetadata(report, r.view, kRadianceUnits)});
     writeScalarExr(dir / (stem + ".E.exr"), r.illuminance, "E", viewMetadata(report, r.view, "lx"));
     writeFaceIdExr(dir / (stem + ".faceid.exr"), r.faces,
                    viewMetadata(report, r.view, "face id (0: none)"));

@@ -192,6 +192,7 @@ nlohmann::json summaryJson(const RunReport& report) {
        {{"load_s", report.loadSeconds},
         {"setup_s", report.setupSeconds},
         {"total_s", report.totalSeconds}}},
+      {"warnings", report.warnings},
       {"grids", grids},
   };
   if (report.estimator == "reference") summary["reference_n"] = report.referenceN;

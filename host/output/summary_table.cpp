@@ -40,8 +40,11 @@ std::string summaryTable(const RunReport& report) {
   if (withDirect) rows.back().push_back("Eavg direct [lx]");
   for (const GridReport& grid : report.grids) {
     const GridMetrics& m = grid.metrics;
+    // Uniformity is a property of an area; scattered sensors have none.
+    const bool area = grid.kind != GridKind::Points;
     rows.push_back({grid.name, fmt::format("{}", m.points), spacing(m.spacing), lux(m.eAvg),
-                    lux(m.eMin), lux(m.eMax), ratio(m.u0), ratio(m.ud)});
+                    lux(m.eMin), lux(m.eMax), area ? ratio(m.u0) : kUndefined,
+                    area ? ratio(m.ud) : kUndefined});
     if (withDirect) {
       rows.back().push_back(grid.directMetrics ? lux(grid.directMetrics->eAvg) : kUndefined);
     }

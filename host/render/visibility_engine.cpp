@@ -1,6 +1,7 @@
 #include "render/visibility_engine.hpp"
 
 #include "cl/buffer.hpp"
+#include "engine/kernel_scene.hpp"
 #include "geometry/tolerance.hpp"
 #include "render/screen_tiles.hpp"
 
@@ -16,7 +17,8 @@ struct VisibilityEngine::State {
   double minDepth = 0.0;
 
   State(compute::Device& d, const Scene& scene)
-      : device(&d), program(d, "visibility", "-cl-std=CL1.2") {
+      // The illuminance kernel's options: the same relative tolerance (the depth tie rule).
+      : device(&d), program(d, "visibility", illuminanceBuildOptions()) {
     upload(scene);
   }
   void upload(const Scene& scene) {

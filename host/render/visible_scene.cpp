@@ -64,7 +64,7 @@ void addPolyhedronSource(VisibleScene& visible, int source, const Source& s) {
       edges.emplace_back(first + i, first + (i + 1) % polygon.size());
     }
   }
-  addObject(visible, PN_VISIBLE_SOLID, planes, std::move(faces), std::move(vertices),
+  addObject(visible, PN_VISIBLE_SOURCE_SOLID, planes, std::move(faces), std::move(vertices),
             std::move(edges));
 }
 

@@ -9,6 +9,7 @@
 #include "geometry/bounding_box.hpp"
 #include "geometry/convex_polyhedron.hpp"
 #include "scene/parameters.hpp"
+#include "scene/scene_warning.hpp"
 
 namespace penumbra {
 
@@ -107,6 +108,8 @@ struct Scene {
   std::vector<View> views;
   std::optional<Room> room;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
+  // What loaded but is probably a mistake (docs/scene-format.md, "Warnings"), in file order.
+  std::vector<SceneWarning> warnings;
 
   // The bounding box of all geometry: solids, sources and calculation points (m).
   BoundingBox bounds() const;

@@ -3,14 +3,12 @@
 #include <fmt/format.h>
 
 #include "scene/scene_loader.hpp"
+#include "scene/scene_warning.hpp"
 
 namespace penumbra {
-namespace {
 
-// "office.yaml:12: sources[1].flux: must not be negative": the form compilers use, which
-// editors and terminals turn into a link to the line.
-std::string describe(const std::filesystem::path& file, int line, const std::string& key,
-                     const std::string& message) {
+std::string locatedMessage(const std::filesystem::path& file, int line, const std::string& key,
+                           const std::string& message) {
   std::string text = file.string();
   if (line > 0) text += fmt::format(":{}", line);
   text += ": ";
@@ -18,11 +16,14 @@ std::string describe(const std::filesystem::path& file, int line, const std::str
   return text + message;
 }
 
-}  // namespace
+std::string warningText(const std::filesystem::path& file, const SceneWarning& warning) {
+  const std::string key = warning.key.empty() ? "" : warning.key + ": ";
+  return locatedMessage(file, warning.line, "", "warning: " + key + warning.message);
+}
 
 SceneError::SceneError(std::filesystem::path file, int line, std::string key,
                        const std::string& message)
-    : std::runtime_error(describe(file, line, key, message)),
+    : std::runtime_error(locatedMessage(file, line, key, message)),
       file_(std::move(file)),
       line_(line),
       key_(std::move(key)),

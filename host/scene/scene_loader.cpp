@@ -11,11 +11,13 @@
 
 #include "geometry/tolerance.hpp"
 #include "scene/grid_builder.hpp"
+#include "scene/grid_placement.hpp"
 #include "scene/parameter_reader.hpp"
 #include "scene/room_builder.hpp"
 #include "scene/shape_builder.hpp"
 #include "scene/shape_reader.hpp"
 #include "scene/source_builder.hpp"
+#include "scene/source_placement.hpp"
 #include "scene/spec_reader.hpp"
 #include "scene/strongest_source.hpp"
 
@@ -68,6 +70,19 @@ void requireThickness(const Solid& solid, double minimum, double sceneSize,
                    solid.name, 1e3 * thickness, sceneSize, 1e3 * minimum, 1e3 * minimum));
 }
 
+// Sources that light nothing and grids that can only give zeros load, with a warning each.
+void addPlacementWarnings(const SceneSpec& spec, Scene& scene, double tolerance) {
+  for (std::size_t i = 0; i < spec.sources.size(); ++i) {
+    const Where& where = spec.sources[i].where;
+    if (auto warning = unlitWarning(scene.sources[i], where, scene, tolerance))
+      scene.warnings.push_back(std::move(*warning));
+  }
+  for (std::size_t i = 0; i < spec.grids.size(); ++i) {
+    if (auto warning = misplacedGridWarning(scene.grids[i], spec.grids[i].where, scene, tolerance))
+      scene.warnings.push_back(std::move(*warning));
+  }
+}
+
 Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   const double sceneSize = std::max(specSize(spec), 1.0);
   const double minimumThickness = Tolerance::kMinimumThicknessRelative * sceneSize;
@@ -97,6 +112,10 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   for (const GridSpec& grid : spec.grids) {
     scene.grids.push_back(buildGrid(grid, scene.room, context));
   }
+  for (std::size_t i = 0; i < spec.sources.size(); ++i) {
+    requireSourceOutsideSolids(scene.sources[i], spec.sources[i].shapeWhere, scene.solids, context);
+  }
+  addPlacementWarnings(spec, scene, context.tolerance);
   for (const ViewSpec& view : spec.views) {
     // A camera inside a wall or a desk would show the inside of a solid: black, or nothing.
     for (const Solid& solid : scene.solids) {

@@ -88,6 +88,7 @@ struct SourceSpec {
   std::string name;
   ShapeSpec shape;
   Where shapeWhere;
+  Where where;                      // the source's entry, e.g. sources[1]
   std::optional<double> luminance;  // exactly one of luminance, flux
   std::optional<double> flux;
   Vec3 color = Vec3::Ones();

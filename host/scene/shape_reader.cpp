@@ -1,5 +1,6 @@
 #include "scene/shape_reader.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <variant>
@@ -142,7 +143,7 @@ TruncusSpec readTruncus(const Reader& reader, const Field& field, std::string_vi
 }  // namespace
 
 std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse use,
-                            std::string_view what) {
+                            std::string_view what, const std::vector<std::string_view>& otherKeys) {
   std::string_view found;
   for (std::string_view key : shapeKeys(use)) {
     if (!entry.has(key)) continue;
@@ -154,8 +155,14 @@ std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse
     found = key;
   }
   if (found.empty()) {
-    reader.fail(entry.where(),
-                std::string(what) + " needs a shape: one of " + listed(shapeKeys(use)));
+    const std::string shapes =
+        std::string(what) + " needs a shape: one of " + listed(shapeKeys(use));
+    for (const MapView::Entry& e : entry.entries()) {
+      if (std::find(otherKeys.begin(), otherKeys.end(), e.key) == otherKeys.end()) {
+        reader.fail(e.value.where, "unknown key '" + e.key + "'; " + shapes);
+      }
+    }
+    reader.fail(entry.where(), shapes);
   }
   return found;
 }

@@ -18,9 +18,11 @@ enum class ShapeUse { Solid, Source };
 inline constexpr int kDefaultFacets = 16;
 inline constexpr int kMaxFacets = 45;
 
-// The one shape key present in `entry` (e.g. "box"); none or several is an error.
+// The one shape key present in `entry` (e.g. "box"); none or several is an error. `otherKeys`
+// are the entry's keys besides the shape's (name, material, ...): with no shape, a key that is
+// none of them (a misspelt `bx:`) is named in the error, at its line.
 std::string_view shapeKeyOf(const Reader& reader, const MapView& entry, ShapeUse use,
-                            std::string_view what);
+                            std::string_view what, const std::vector<std::string_view>& otherKeys);
 
 // Keys that go with the shape key, beside it in the same entry (a polygon's `normal`,
 // an opening's `plane`).

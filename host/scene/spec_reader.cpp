@@ -152,7 +152,8 @@ RoomSpec readRoom(const Reader& reader, const Field& field, const MaterialLookup
 
 SolidSpec readSolid(const Reader& reader, const Field& field, const MaterialLookup& material) {
   const MapView map = reader.map(field, "a solid");
-  const std::string_view shapeKey = shapeKeyOf(reader, map, ShapeUse::Solid, "a solid");
+  const std::string_view shapeKey =
+      shapeKeyOf(reader, map, ShapeUse::Solid, "a solid", {"name", "material"});
   map.allowOnly({"name", "material", shapeKey}, "a solid");
   SolidSpec spec;
   spec.name = reader.text(map.require("name"));
@@ -167,13 +168,16 @@ SolidSpec readSolid(const Reader& reader, const Field& field, const MaterialLook
 
 SourceSpec readSource(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "a source");
-  const std::string_view shapeKey = shapeKeyOf(reader, map, ShapeUse::Source, "a source");
+  const std::string_view shapeKey =
+      shapeKeyOf(reader, map, ShapeUse::Source, "a source",
+                 {"name", "luminance", "flux", "color", "normal", "plane"});
   std::vector<std::string_view> accepted{"name", shapeKey, "luminance", "flux", "color"};
   for (std::string_view key : shapeSiblingKeys(shapeKey)) accepted.push_back(key);
   map.allowOnly(accepted, "a source with '" + std::string(shapeKey) + "'");
 
   SourceSpec spec;
   spec.name = reader.text(map.require("name"));
+  spec.where = field.where;
   std::tie(spec.shape, spec.shapeWhere) = readShape(reader, map, shapeKey);
   const std::optional<Field> luminance = map.find("luminance");
   const std::optional<Field> flux = map.find("flux");

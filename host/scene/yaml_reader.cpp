@@ -26,6 +26,25 @@ std::string describe(const YAML::Node& node) {
   return "something else";
 }
 
+// The 1-based number of the last line, up to `lastLine`, whose indentation (the blanks before its
+// first other character) holds a tab; 0 when none does.
+int lastTabIndentedLine(const std::string& text, int lastLine) {
+  int found = 0, line = 1;
+  bool indentation = true;
+  for (char c : text) {
+    if (line > lastLine) break;
+    if (c == '\n') {
+      ++line;
+      indentation = true;
+    } else if (indentation && c == '\t') {
+      found = line;
+    } else if (c != ' ') {
+      indentation = false;
+    }
+  }
+  return found;
+}
+
 std::string joined(const std::vector<std::string_view>& words) {
   std::string out;
   for (std::string_view w : words) {
@@ -59,7 +78,16 @@ YAML::Node parseYaml(const std::string& text, const std::filesystem::path& file)
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    throw SceneError(file, e.mark.line + 1, "", "this is not valid YAML: " + e.msg);
+    const int line = e.mark.line + 1;
+    // yaml-cpp's words for a tab ("illegal map value", "end of map not found") do not say what
+    // is wrong; a tab is the likely cause when one indents a line up to the failing one.
+    if (const int tabLine = lastTabIndentedLine(text, line); tabLine > 0) {
+      throw SceneError(file, tabLine, "",
+                       "this line is indented with a tab, and YAML does not allow tabs in "
+                       "indentation: indent with spaces (the YAML parser says: " +
+                           e.msg + ")");
+    }
+    throw SceneError(file, line, "", "this is not valid YAML: " + e.msg);
   }
 }
 
