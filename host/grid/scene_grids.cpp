@@ -17,6 +17,12 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
   report.estimator = estimator.name();
   report.referenceN = estimator.referenceN();
   report.device = estimator.device();
+  for (const Luminaire& l : scene.luminaires) {
+    report.luminaires.push_back(
+        LuminaireReport{l.name, l.file.string(), photometry::formatName(l.format),
+                        static_cast<int>(l.instances.size()), l.lampLumens, l.zonalFluxLm(),
+                        l.maintenanceFactor, luminaireModelName(l.model)});
+  }
   return report;
 }
 

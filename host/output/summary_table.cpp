@@ -31,6 +31,12 @@ std::string spacing(double s) {
 }  // namespace
 
 std::string summaryTable(const RunReport& report) {
+  std::string luminaires;
+  for (const LuminaireReport& l : report.luminaires) {
+    luminaires += fmt::format(
+        "{}{} × {} ({:.0f} lm, MF {:.2f}, {})", luminaires.empty() ? "" : "; ", l.instances, l.name,
+        l.lampLumens > 0.0 ? l.lampLumens : l.zonalFluxLm, l.maintenanceFactor, l.model);
+  }
   using Row = std::array<std::string, 8>;
   std::vector<Row> rows;
   rows.push_back(
@@ -44,7 +50,7 @@ std::string summaryTable(const RunReport& report) {
   for (const Row& row : rows) {
     for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
   }
-  std::string table;
+  std::string table = luminaires.empty() ? "" : "Luminaires: " + luminaires + "\n";
   const auto appendRow = [&](const Row& row) {
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (c > 0) table += " | ";

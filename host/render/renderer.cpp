@@ -83,13 +83,14 @@ struct Renderer::State {
       for (std::size_t j = start; j < end; ++j) {
         const std::size_t i = indices[j], local = j - start;
         const Vec3& rho = solidReflectance[points[local].solid];
-        Vec3 light = Vec3::Zero();  // Σ E_s · colour_s
+        Vec3 light = Vec3::Zero();  // Σ E_s · colour_s, and the luminaires' E in white
         for (int s = 0; s < sources; ++s) {
           const double e = result.bySource[local * sources + s];
           light += e * sourceColours[s];
           classes[i * sources + s] =
               e > 0.0 ? result.shadowClass[local * sources + s] : ShadowClass::Umbra;
         }
+        if (!result.luminaires.empty()) light += Vec3::Constant(result.luminaires[local]);
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
         layer.illuminance[i] = static_cast<float>(result.illuminance[local]);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);

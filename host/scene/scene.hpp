@@ -8,6 +8,7 @@
 
 #include "geometry/bounding_box.hpp"
 #include "geometry/convex_polyhedron.hpp"
+#include "scene/luminaire.hpp"
 #include "scene/parameters.hpp"
 
 namespace penumbra {
@@ -103,12 +104,14 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0.1, ...)
   std::vector<Source> sources;
+  std::vector<Luminaire> luminaires;  // photometric luminaires, each with its instances
   std::vector<CalculationGrid> grids;
   std::vector<View> views;
   std::optional<Room> room;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
 
-  // The bounding box of all geometry: solids, sources and calculation points (m).
+  // The bounding box of all geometry: solids, sources, luminaires' photometric centres and
+  // calculation points (m).
   BoundingBox bounds() const;
   // Its diagonal (m); the scale of Tolerance.
   double size() const;
