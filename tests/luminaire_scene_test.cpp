@@ -121,7 +121,7 @@ TEST(LuminaireScene, ANegativeMaintenanceFactorIsAnError) {
       "    file: luminaires/narrow-downlight.ies\n"
       "    position: [0, 0, 3]\n"
       "    maintenance_factor: -0.2\n",
-      7, "luminaires[0].maintenance_factor", "greater than 0");
+      7, "luminaires[0].maintenance_factor", "lies in (0, 1], got -0.2");
   expectError(
       "  - {name: d, file: luminaires/narrow-downlight.ies, position: [0, 0, 3], "
       "maintenance_factor: 80}\n",

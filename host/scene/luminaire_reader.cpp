@@ -81,8 +81,8 @@ LuminaireSpec readLuminaire(const Reader& reader, const Field& field) {
     spec.fluxWhere = flux->where;
   }
   if (const std::optional<Field> mf = map.find("maintenance_factor")) {
-    spec.maintenanceFactor = reader.positive(*mf, "");
-    if (spec.maintenanceFactor > 1.0) {
+    spec.maintenanceFactor = reader.number(*mf);
+    if (!(spec.maintenanceFactor > 0.0 && spec.maintenanceFactor <= 1.0)) {
       reader.fail(mf->where, "a maintenance factor lies in (0, 1], got " +
                                  formatNumber(spec.maintenanceFactor));
     }
