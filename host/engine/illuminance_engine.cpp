@@ -146,7 +146,10 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
   IlluminanceResult result = evaluateSources(points, bySource);
   if (state_->hasLuminaires) {
-    result.luminaires = state_->luminaires->illuminance(points);
+    LuminaireEngine::Result luminaires = state_->luminaires->evaluate(points);
+    result.luminaires = std::move(luminaires.illuminance);
+    result.luminaireSeen = std::move(luminaires.seen);
+    result.luminaireCount = luminaires.luminaires;
     for (std::size_t i = 0; i < result.illuminance.size(); ++i)
       result.illuminance[i] += result.luminaires[i];
   }

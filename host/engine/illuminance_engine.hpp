@@ -37,6 +37,9 @@ struct IlluminanceResult {
   // lx per point from the photometric luminaires (included in `illuminance`); empty when the
   // scene has none. They are white: a render adds them to every channel.
   std::vector<double> luminaires;
+  // [point * luminaireCount + l]: whether the point sees placed luminaire l (LuminaireEngine).
+  std::vector<std::uint8_t> luminaireSeen;
+  int luminaireCount = 0;
   ShadowClass shadow(std::size_t point, int source) const {
     return shadowClass[point * static_cast<std::size_t>(sourceCount) + source];
   }

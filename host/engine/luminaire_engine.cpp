@@ -62,18 +62,28 @@ void LuminaireEngine::setScene(const Scene& scene, const Vec3& origin, float eps
   s.planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
 }
 
-std::vector<double> LuminaireEngine::illuminance(std::span<const SamplePoint> points) {
+LuminaireEngine::Result LuminaireEngine::evaluate(std::span<const SamplePoint> points) {
   State& s = *state_;
   const std::size_t n = points.size();
-  if (n == 0 || s.params.luminaireCount == 0) return std::vector<double>(n, 0.0);
+  const std::size_t count = static_cast<std::size_t>(s.params.luminaireCount);
+  Result result;
+  result.luminaires = s.params.luminaireCount;
+  if (n == 0 || count == 0) {
+    result.illuminance.assign(n, 0.0);
+    result.seen.assign(n * count, 0);
+    return result;
+  }
   compute::Device& d = *s.device;
   const std::size_t padded = (n + kWorkGroup - 1) / kWorkGroup * kWorkGroup;
-  const std::vector<std::size_t> batch(8, padded * sizeof(float));
+  std::vector<std::size_t> batch(8, padded * sizeof(float));
+  batch.push_back(padded * count);
   if (!compute::fitsDevice(d.info(), batch, s.sceneBytes) && n > kWorkGroup) {
     const std::size_t half = (n / 2 + kWorkGroup - 1) / kWorkGroup * kWorkGroup;
-    std::vector<double> first = illuminance(points.first(half));
-    const std::vector<double> second = illuminance(points.subspan(half));
-    first.insert(first.end(), second.begin(), second.end());
+    Result first = evaluate(points.first(half));
+    const Result second = evaluate(points.subspan(half));
+    first.illuminance.insert(first.illuminance.end(), second.illuminance.begin(),
+                             second.illuminance.end());
+    first.seen.insert(first.seen.end(), second.seen.begin(), second.seen.end());
     return first;
   }
   compute::requireDeviceMemory(d.info(), batch, s.sceneBytes,
@@ -94,8 +104,10 @@ std::vector<double> LuminaireEngine::illuminance(std::span<const SamplePoint> po
   for (int k = 0; k < 6; ++k) pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
   DeviceBuffer out = DeviceBuffer::allocate(d, padded * sizeof(float));
+  DeviceBuffer seen = DeviceBuffer::allocate(d, padded * count);
   PnLuminaireParams params = s.params;
   params.pointCount = static_cast<cl_int>(n);
+  params.pointStride = static_cast<cl_int>(padded);
 
   compute::KernelLaunch launch(s.program, "luminaire_illuminance");
   unsigned index = 0;
@@ -103,13 +115,21 @@ std::vector<double> LuminaireEngine::illuminance(std::span<const SamplePoint> po
   for (const DeviceBuffer& b : pointBuffers) launch.arg(index++, b);
   launch.arg(index++, ownBuffer);
   for (const DeviceBuffer* b :
-       {&s.luminaires, &s.tables, &s.angles, &s.candela, &s.solids, &s.planes, &out}) {
+       {&s.luminaires, &s.tables, &s.angles, &s.candela, &s.solids, &s.planes, &out, &seen}) {
     launch.arg(index++, *b);
   }
   launch.run(padded, kWorkGroup);
   std::vector<float> e(padded);
   out.download(e.data(), padded * sizeof(float));
-  return std::vector<double>(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
+  // The kernel writes luminaire by luminaire; callers read point by point.
+  std::vector<std::uint8_t> byLuminaire(padded * count);
+  seen.download(byLuminaire.data(), byLuminaire.size());
+  result.seen.resize(n * count);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t l = 0; l < count; ++l)
+      result.seen[i * count + l] = byLuminaire[l * padded + i];
+  return result;
 }
 
 }  // namespace penumbra

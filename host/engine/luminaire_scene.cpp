@@ -5,7 +5,7 @@ static_assert(sizeof(PnCandelaTable) == 32,
 static_assert(sizeof(PnLuminaire) == 80, "PnLuminaire layout must match kernels/shared_types.h");
 static_assert(sizeof(PnShadowSolid) == 48,
               "PnShadowSolid layout must match kernels/shared_types.h");
-static_assert(sizeof(PnLuminaireParams) == 16,
+static_assert(sizeof(PnLuminaireParams) == 32,
               "PnLuminaireParams layout must match kernels/shared_types.h");
 
 namespace penumbra {
