@@ -127,4 +127,49 @@ typedef struct {
 #define PN_VISIBLE_SOURCE_SOLID 2
 #define PN_VISIBILITY_TILE 16 /* screen tiles are 16 × 16 samples */
 
+/* The point model of photometric luminaires (kernels/luminaire.cl, engine/luminaire_scene.hpp).
+ * One candela table per luminaire, shared by its instances: the planes (C for type C, V for
+ * type B, H for type A) and the angles within them, in degrees, increasing, at
+ * angles[firstAngle ...] (planeCount plane angles, then inPlaneCount in-plane angles); the
+ * intensities in cd, already times the luminaire's scale (flux override, maintenance factor), at
+ * candela[firstCandela + plane * inPlaneCount + inPlane]. Type C planes are periodic over 360°. */
+typedef struct {
+  pn_int firstAngle, planeCount, inPlaneCount;
+  pn_int firstCandela;
+  pn_int type; /* PN_PHOTOMETRIC_C, _B or _A */
+  pn_int pad1, pad2, pad3;
+} PnCandelaTable;
+
+#define PN_PHOTOMETRIC_C 0
+#define PN_PHOTOMETRIC_B 1
+#define PN_PHOTOMETRIC_A 2
+
+/* One placed luminaire: its photometric centre (relative to the kernel's origin) and the rows of
+ * the rotation from the scene to its local frame (local = R · scene). */
+typedef struct {
+  pn_float4 centre;
+  pn_float4 toLocal0, toLocal1, toLocal2;
+  pn_int table; /* index into the PnCandelaTable list */
+  pn_int pad1, pad2, pad3;
+} PnLuminaire;
+
+/* A solid as the point model's shadow test reads it: the intersection of its planes' closed
+ * insides (n·x <= w), planes at firstPlane ..., and its bounding box. */
+typedef struct {
+  pn_float4 lo, hi;
+  pn_int firstPlane, planeCount;
+  pn_int solid; /* scene solid index: a point on it is never shaded by it */
+  pn_int pad1;
+} PnShadowSolid;
+
+/* The scalar launch parameters of kernels/luminaire.cl, passed by value. */
+typedef struct {
+  pn_int pointCount;     /* points in the batch (the buffers may be longer) */
+  pn_int luminaireCount; /* placed luminaires */
+  pn_int solidCount;
+  float epsLength;     /* the kernel's absolute length tolerance (m), as for the illuminance kernel */
+  pn_int pointStride;  /* the row length of the per-luminaire output `seen` */
+  pn_int pad1, pad2, pad3;
+} PnLuminaireParams;
+
 #endif

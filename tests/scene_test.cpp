@@ -11,6 +11,7 @@
 #include "scene/grid_builder.hpp"
 #include "scene/pts_reader.hpp"
 #include "scene/scene_loader.hpp"
+#include "scene_errors.hpp"
 
 namespace penumbra {
 namespace {
@@ -23,13 +24,7 @@ const fs::path kCie171 = kSourceDir / "tests" / "validation" / "cie171";  // CIE
 
 // The SceneError that parsing `yaml` throws; fails the test when it parses.
 SceneError errorOf(const std::string& yaml, const fs::path& file = "test.yaml") {
-  try {
-    parseScene(yaml, file);
-  } catch (const SceneError& e) {
-    return e;
-  }
-  ADD_FAILURE() << "expected a SceneError for:\n" << yaml;
-  return SceneError(file, -1, "", "none");
+  return testing::sceneErrorOf(yaml, file);
 }
 
 // Asserts line, key, and that the message contains `words`.

@@ -80,11 +80,13 @@ TEST_P(Cie171, KernelMatchesTheExactValues) {
               name.c_str(), exact.size(), worst, maximum);
 }
 
-INSTANTIATE_TEST_SUITE_P(Validation, Cie171, ::testing::Values("tc5.3", "tc5.6", "tc5.7", "tc5.11"),
+INSTANTIATE_TEST_SUITE_P(Validation, Cie171,
+                         ::testing::Values("tc5.3", "tc5.6", "tc5.7", "tc5.11",
+                                           "tc-point-isotropic", "tc-point-directional"),
                          [](const auto& info) {
                            std::string n = info.param;
                            for (char& c : n)
-                             if (c == '.') c = '_';
+                             if (c == '.' || c == '-') c = '_';
                            return n;
                          });
 

@@ -11,6 +11,12 @@
 
 namespace penumbra::compute {
 
+// The bytes the elements of `v` take, as a buffer of them would.
+template <class T>
+std::size_t byteSize(const std::vector<T>& v) {
+  return v.size() * sizeof(T);
+}
+
 class DeviceBuffer {
  public:
   DeviceBuffer();

@@ -9,21 +9,13 @@
 
 #include "cl/buffer.hpp"
 #include "engine/kernel_scene.hpp"
+#include "engine/luminaire_engine.hpp"
 #include "engine/patch_table.hpp"
 #include "shadow/scene_shadows.hpp"
 
 namespace penumbra {
 
 using compute::DeviceBuffer;
-
-namespace {
-
-template <class T>
-std::size_t bytes(const std::vector<T>& v) {
-  return v.size() * sizeof(T);
-}
-
-}  // namespace
 
 struct IlluminanceEngine::State {
   compute::Device* device = nullptr;
@@ -34,6 +26,9 @@ struct IlluminanceEngine::State {
   compute::Program program;
   DeviceBuffer faces, apertures, sourceVertices, occluders, planes, edges, occluderVertices;
   std::size_t sceneBytes = 0;  // what the buffers above take on the device
+  // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
+  std::unique_ptr<LuminaireEngine> luminaires;
+  bool hasLuminaires = false;
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d), options(o), program(d, "illuminance", illuminanceBuildOptions()) {
@@ -47,10 +42,11 @@ struct IlluminanceEngine::State {
     packed = packScene(scene, shadows);
     if (!options.apertures)
       for (PnSourceFace& f : packed.faces) f.aperture = -1;
-    const std::vector<std::size_t> tables = {bytes(packed.faces),           bytes(packed.apertures),
-                                             bytes(packed.sourceVertices),  bytes(packed.occluders),
-                                             bytes(packed.planes),          bytes(packed.edges),
-                                             bytes(packed.occluderVertices)};
+    const std::vector<std::size_t> tables = {
+        compute::byteSize(packed.faces),           compute::byteSize(packed.apertures),
+        compute::byteSize(packed.sourceVertices),  compute::byteSize(packed.occluders),
+        compute::byteSize(packed.planes),          compute::byteSize(packed.edges),
+        compute::byteSize(packed.occluderVertices)};
     compute::requireDeviceMemory(
         d.info(), tables, 0,
         fmt::format("the scene (source faces: {}, occluders: {})", packed.faces.size(),
@@ -65,6 +61,11 @@ struct IlluminanceEngine::State {
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
     edges = DeviceBuffer::upload<cl_int4>(d, packed.edges);
     occluderVertices = DeviceBuffer::upload<cl_float4>(d, packed.occluderVertices);
+    hasLuminaires = !scene.luminaires.empty();
+    if (hasLuminaires) {
+      if (!luminaires) luminaires = std::make_unique<LuminaireEngine>(d);
+      luminaires->setScene(scene, packed.origin, packed.epsLength);
+    }
   }
 };
 
@@ -143,6 +144,20 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
 }  // namespace
 
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
+  IlluminanceResult result = evaluateSources(points, bySource);
+  if (state_->hasLuminaires) {
+    LuminaireEngine::Result luminaires = state_->luminaires->evaluate(points);
+    result.luminaires = std::move(luminaires.illuminance);
+    result.luminaireSeen = std::move(luminaires.seen);
+    result.luminaireCount = luminaires.luminaires;
+    for (std::size_t i = 0; i < result.illuminance.size(); ++i)
+      result.illuminance[i] += result.luminaires[i];
+  }
+  return result;
+}
+
+IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint> points,
+                                                     bool bySource) {
   // The plain path takes the points as given: its work per point does not
   // depend on the point's neighbours.
   if (!state_->options.culling || points.size() <= PN_LANES)
@@ -246,7 +261,7 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   const std::vector<std::size_t> batch = {
       padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
       padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
-      padded * sizeof(cl_int),   bytes(table.entries),       bytes(table.candidates),
+      padded * sizeof(cl_int),   compute::byteSize(table.entries), compute::byteSize(table.candidates),
       outValues * sizeof(float), workItems * sizeof(cl_int), classBytes};
   if (!compute::fitsDevice(d.info(), batch, state_->sceneBytes)) {
     // Too many points for the device at once: halves cut on a work-group boundary give the same

@@ -1,5 +1,6 @@
 #pragma once
-// Exact direct illuminance at sample points, computed by kernels/illuminance.cl.
+// Exact direct illuminance at sample points: the Lambertian sources by kernels/illuminance.cl,
+// the photometric luminaires' point model by kernels/luminaire.cl (LuminaireEngine).
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -29,10 +30,16 @@ struct EngineOptions {
 };
 
 struct IlluminanceResult {
-  std::vector<double> illuminance;       // lx, per point, summed over all sources
+  std::vector<double> illuminance;       // lx, per point, summed over all sources and luminaires
   std::vector<ShadowClass> shadowClass;  // [point * sourceCount + source]
   std::vector<double> bySource;          // lx, [point * sourceCount + source], when asked for
   int sourceCount = 0;
+  // lx per point from the photometric luminaires (included in `illuminance`); empty when the
+  // scene has none. They are white: a render adds them to every channel.
+  std::vector<double> luminaires;
+  // [point * luminaireCount + l]: whether the point sees placed luminaire l (LuminaireEngine).
+  std::vector<std::uint8_t> luminaireSeen;
+  int luminaireCount = 0;
   ShadowClass shadow(std::size_t point, int source) const {
     return shadowClass[point * static_cast<std::size_t>(sourceCount) + source];
   }
@@ -49,7 +56,7 @@ class IlluminanceEngine {
   // cases. Afterwards illuminance() answers for `scene` only.
   void setScene(const Scene& scene);
 
-  // E in lx at every point, summed over all sources.
+  // E in lx at every point, summed over all sources and luminaires.
   std::vector<double> illuminance(std::span<const SamplePoint> points);
   // E and each point's shadow class per source. With culling off the classes come from the
   // plain path's tests: Lit or Penumbra ("some occluder may block"), never Umbra.
@@ -72,6 +79,8 @@ class IlluminanceEngine {
   };
   KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses);
 
+  // The Lambertian sources' part of evaluate().
+  IlluminanceResult evaluateSources(std::span<const SamplePoint> points, bool bySource);
   // evaluate() for points in the order the kernel's work-items take them.
   IlluminanceResult evaluateInOrder(std::span<const SamplePoint> points, bool bySource);
 

@@ -31,6 +31,18 @@ struct GridReport {
   double seconds = 0.0;                      // time spent computing E for this grid
 };
 
+// A photometric luminaire of the scene as summary.json lists it.
+struct LuminaireReport {
+  std::string name;
+  std::string file;          // as resolved against the scene file
+  std::string format;        // "IES LM-63", "EULUMDAT"
+  int instances = 1;         // placed copies (an array's count)
+  double lampLumens = 0.0;   // lm per instance, after the flux override (0: absolute photometry)
+  double zonalFluxLm = 0.0;  // lm per instance from the table, before the maintenance factor
+  double maintenanceFactor = 1.0;
+  std::string model;  // "point"
+};
+
 struct RunReport {
   std::string version;              // penumbra's
   std::filesystem::path sceneFile;  // as given on the command line
@@ -45,6 +57,7 @@ struct RunReport {
   std::optional<InterreflectionReport> interreflection;
   // The scene's warnings, each as printed ("office.yaml:31: warning: sources[1]: ...").
   std::vector<std::string> warnings;
+  std::vector<LuminaireReport> luminaires;
   std::vector<GridReport> grids;
 };
 

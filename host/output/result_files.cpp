@@ -215,6 +215,20 @@ nlohmann::json summaryJson(const RunReport& report) {
           {"gather_setup_s", r.setupSeconds}}},
     };
   }
+  if (!report.luminaires.empty()) {
+    nlohmann::json luminaires = nlohmann::json::array();
+    for (const LuminaireReport& l : report.luminaires) {
+      luminaires.push_back({{"name", l.name},
+                            {"file", l.file},
+                            {"format", l.format},
+                            {"instances", l.instances},
+                            {"lamp_lumens_lm", number(l.lampLumens)},
+                            {"zonal_flux_lm", number(l.zonalFluxLm)},
+                            {"maintenance_factor", number(l.maintenanceFactor)},
+                            {"model", l.model}});
+    }
+    summary["luminaires"] = luminaires;
+  }
   return summary;
 }
 

@@ -31,6 +31,12 @@ std::string spacing(double s) {
 }  // namespace
 
 std::string summaryTable(const RunReport& report) {
+  std::string luminaires;
+  for (const LuminaireReport& l : report.luminaires) {
+    luminaires += fmt::format(
+        "{}{} × {} ({:.0f} lm, MF {:.2f}, {})", luminaires.empty() ? "" : "; ", l.instances, l.name,
+        l.lampLumens > 0.0 ? l.lampLumens : l.zonalFluxLm, l.maintenanceFactor, l.model);
+  }
   // With interreflection, a last column gives the direct part of Eavg.
   const bool withDirect = report.interreflection.has_value();
   using Row = std::vector<std::string>;
@@ -56,6 +62,7 @@ std::string summaryTable(const RunReport& report) {
   std::string table =
       fmt::format("E: {}\n", report.interreflection ? "total illuminance (direct + interreflected)"
                                                     : "direct illuminance only");
+  if (!luminaires.empty()) table += "Luminaires: " + luminaires + "\n";
   const auto appendRow = [&](const Row& row) {
     for (std::size_t c = 0; c < row.size(); ++c) {
       if (c > 0) table += " | ";

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <utility>
 
+#include "geometry/tolerance.hpp"
+
 namespace penumbra::photometry {
 namespace {
 
@@ -61,13 +63,20 @@ std::vector<Plane> expandC(const std::vector<double>& stored, HorizontalSymmetry
   return planes;
 }
 
+// An angle this close to an end of its axis (degrees) is that end: a direction along the edge of
+// the measured range, turned into a luminaire's frame and back, must not flip between the table's
+// last value and 0 by rounding.
+constexpr double kEndToleranceDeg = Tolerance::kRelativeGeometry * 180.0;
+
 // Index i with axis[i] <= x <= axis[i + 1] and the weight of axis[i + 1]; false outside.
 bool locate(const std::vector<double>& axis, double x, std::size_t& i, double& t) {
   if (axis.size() == 1) {
     i = 0;
     t = 0;
-    return x == axis.front();
+    return std::abs(x - axis.front()) <= kEndToleranceDeg;
   }
+  if (x < axis.front() && axis.front() - x <= kEndToleranceDeg) x = axis.front();
+  if (x > axis.back() && x - axis.back() <= kEndToleranceDeg) x = axis.back();
   if (!(x >= axis.front() && x <= axis.back())) return false;
   i = static_cast<std::size_t>(std::upper_bound(axis.begin(), axis.end(), x) - axis.begin());
   i = std::min(i == 0 ? 0 : i - 1, axis.size() - 2);

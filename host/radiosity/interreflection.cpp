@@ -12,7 +12,8 @@ namespace penumbra {
 namespace {
 
 // Direct E per channel at every node: each source's E split into channels by its colour
-// relative to the colour's luminance (a source's `color` keeps its photometric luminance).
+// relative to the colour's luminance (a source's `color` keeps its photometric luminance), and
+// the photometric luminaires' E in every channel.
 Eigen::MatrixX3d nodeDirect(IlluminanceEngine& engine, const Scene& scene,
                             const SurfaceMesh& mesh) {
   const std::size_t sources = scene.sources.size();
@@ -23,13 +24,16 @@ Eigen::MatrixX3d nodeDirect(IlluminanceEngine& engine, const Scene& scene,
   }
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
   Eigen::MatrixX3d direct = Eigen::MatrixX3d::Zero(n, 3);
-  if (n == 0 || sources == 0) return direct;
+  if (n == 0) return direct;
   const IlluminanceResult result = engine.evaluate(mesh.nodes, true);
   for (Eigen::Index node = 0; node < n; ++node) {
     for (std::size_t s = 0; s < sources; ++s) {
       direct.row(node) +=
           result.bySource[static_cast<std::size_t>(node) * sources + s] * channel[s].transpose();
     }
+    // Photometric luminaires are white.
+    if (!result.luminaires.empty())
+      direct.row(node).array() += result.luminaires[static_cast<std::size_t>(node)];
   }
   return direct;
 }

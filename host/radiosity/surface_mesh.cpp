@@ -134,6 +134,13 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
         if (canExchange(faces[i].polygon, emitter, tolerance)) reached[i] = 1;
       }
     }
+    // A luminaire's photometric centre in front of the face.
+    const Plane plane = faces[i].polygon.plane();
+    for (const Luminaire& luminaire : scene.luminaires) {
+      for (const LuminaireInstance& instance : luminaire.instances) {
+        if (plane.signedDistance(instance.position) > tolerance) reached[i] = 1;
+      }
+    }
     if (reached[i]) queue.push_back(i);
   }
   while (!queue.empty()) {

@@ -50,7 +50,8 @@ struct SurfaceMesh {
 };
 
 // Faces A and B can exchange light only if each has part of the other strictly in front of it.
-// Starting from the faces that can see a source, every face that can see an already reached
+// Starting from the faces that can see a source or have a luminaire's photometric centre in
+// front of them, every face that can see an already reached
 // face with a material is reached too: a superset of the faces light can get to.
 SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options = {});
 

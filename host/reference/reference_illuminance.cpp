@@ -37,25 +37,20 @@
 #include <stdexcept>
 
 #include "geometry/tolerance.hpp"
+#include "reference/luminaire_illuminance.hpp"
+#include "reference/reference_occluders.hpp"
 
 namespace penumbra {
 namespace {
+
+using reference::buildOccluders;
+using reference::Occluder;
 
 using Vec2 = Eigen::Vector2d;
 
 // Samples per parallel chunk: the chunk sums are added in chunk order, so the result does not
 // depend on the thread schedule.
 constexpr long long kChunk = 4096;
-
-// A solid as the visibility test sees it: face planes as structure of arrays, each plane's
-// offset already moved inwards by the tolerance, and the solid's bounding box.
-struct Occluder {
-  int solid = -1;
-  std::vector<Vec3> normals;
-  std::vector<double> shrunkOffsets;
-  std::vector<Vec3> vertices;
-  Vec3 lo, hi;
-};
 
 // A source face with its sample lattice: point (s, t) of the unit square lies at
 // corner + s·spanS + t·spanT.
@@ -79,28 +74,6 @@ struct Candidate {
   const Occluder* occluder = nullptr;
   std::vector<double> startDistances;
 };
-
-std::vector<Occluder> buildOccluders(const Scene& scene, double tolerance) {
-  std::vector<Occluder> occluders;
-  for (int s = 0; s < static_cast<int>(scene.solids.size()); ++s) {
-    const ConvexPolyhedron& shape = scene.solids[s].shape;
-    if (shape.empty()) continue;
-    Occluder o;
-    o.solid = s;
-    for (const auto& face : shape.faces()) {
-      o.normals.push_back(face.plane.normal);
-      o.shrunkOffsets.push_back(face.plane.offset - tolerance);
-    }
-    o.vertices = shape.vertices();
-    o.lo = o.hi = o.vertices.front();
-    for (const Vec3& p : o.vertices) {
-      o.lo = o.lo.cwiseMin(p);
-      o.hi = o.hi.cwiseMax(p);
-    }
-    occluders.push_back(std::move(o));
-  }
-  return occluders;
-}
 
 // The point of the unit square that lattice point i stands for.
 Vec2 latticePoint(const SampledFace& face, long long i) {
@@ -338,6 +311,10 @@ std::vector<double> referenceIlluminance(const Scene& scene, std::span<const Sam
                         result[i] = illuminanceAt(points[i], faces, occluders, tolerance);
                       }
                     });
+  if (!scene.luminaires.empty()) {
+    const std::vector<double> luminaires = referenceLuminaireIlluminance(scene, points);
+    for (std::size_t i = 0; i < result.size(); ++i) result[i] += luminaires[i];
+  }
   return result;
 }
 

@@ -11,7 +11,7 @@
 
 namespace penumbra {
 
-// E in lx at every point, summed over all sources.
+// E in lx at every point, summed over all sources and luminaires (luminaire_illuminance.hpp).
 std::vector<double> referenceIlluminance(const Scene& scene, std::span<const SamplePoint> points,
                                          int n);
 

@@ -66,13 +66,23 @@ struct Renderer::State {
     return SamplePoint{p, face.plane.normal, face.index};
   }
 
+  // The interval plan's shadow classes per sample: one per source, then one per placed
+  // luminaire (Lit where the sample sees its centre, Umbra where not), so that a luminaire's
+  // hard shadow edge is never interpolated across.
+  int classColumns() const {
+    int columns = static_cast<int>(scene->sources.size());
+    for (const Luminaire& l : scene->luminaires) columns += static_cast<int>(l.instances.size());
+    return columns;
+  }
+
   // Exact illuminance and luminance at `indices` (in batches of kBatch), and each one's shadow
-  // class per source into `classes` (sample × source) for the interval plan. A source that gives
-  // a sample nothing counts as umbra there, whatever the volumes said: several occluders
-  // together can hide a source that none hides alone.
+  // class per source and luminaire into `classes` (sample × classColumns()) for the interval
+  // plan. A source that gives a sample nothing counts as umbra there, whatever the volumes said:
+  // several occluders together can hide a source that none hides alone.
   void evaluate(const Camera& camera, SampleLayer& layer, const std::vector<std::size_t>& indices,
                 std::vector<ShadowClass>& classes, const std::function<void(std::size_t)>& done) {
     const int sources = static_cast<int>(scene->sources.size());
+    const int columns = classColumns();
     std::vector<SamplePoint> points;
     for (std::size_t start = 0; start < indices.size(); start += kBatch) {
       const std::size_t end = std::min(indices.size(), start + kBatch);
@@ -83,13 +93,19 @@ struct Renderer::State {
       for (std::size_t j = start; j < end; ++j) {
         const std::size_t i = indices[j], local = j - start;
         const Vec3& rho = solidReflectance[points[local].solid];
-        Vec3 light = Vec3::Zero();  // Σ E_s · colour_s
+        Vec3 light = Vec3::Zero();  // Σ E_s · colour_s, and the luminaires' E in white
         for (int s = 0; s < sources; ++s) {
           const double e = result.bySource[local * sources + s];
           light += e * sourceColours[s];
-          classes[i * sources + s] =
+          classes[i * columns + s] =
               e > 0.0 ? result.shadowClass[local * sources + s] : ShadowClass::Umbra;
         }
+        for (int l = 0; l < result.luminaireCount; ++l) {
+          classes[i * columns + sources + l] =
+              result.luminaireSeen[local * result.luminaireCount + l] ? ShadowClass::Lit
+                                                                      : ShadowClass::Umbra;
+        }
+        if (!result.luminaires.empty()) light += Vec3::Constant(result.luminaires[local]);
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
         layer.illuminance[i] = static_cast<float>(result.illuminance[local]);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
@@ -131,8 +147,8 @@ struct Renderer::State {
     stats.shadingSeconds += secondsSince(start);
 
     start = Clock::now();
-    const int sources = static_cast<int>(scene->sources.size());
-    std::vector<ShadowClass> classes(n * sources, ShadowClass::Unlit);
+    const int columns = classColumns();
+    std::vector<ShadowClass> classes(n * columns, ShadowClass::Unlit);
     std::size_t done = 0;
     // Later rounds are unknown until the earlier ones are done: progress counts what is known.
     const auto advance = [&](std::size_t count) {
@@ -141,7 +157,7 @@ struct Renderer::State {
     };
     const std::vector<std::size_t>& first = plan.firstPass();
     evaluate(camera, layer, first, classes, advance);
-    const std::vector<std::size_t> second = plan.secondPass(classes, sources);
+    const std::vector<std::size_t> second = plan.secondPass(classes, columns);
     evaluate(camera, layer, second, classes, advance);
     const std::vector<std::size_t> third = plan.thirdPass(layer.illuminance);
     evaluate(camera, layer, third, classes, advance);

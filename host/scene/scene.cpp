@@ -73,6 +73,9 @@ BoundingBox Scene::bounds() const {
       std::for_each(face.vertices().begin(), face.vertices().end(), add);
     }
   }
+  for (const Luminaire& luminaire : luminaires) {
+    for (const LuminaireInstance& instance : luminaire.instances) add(instance.position);
+  }
   for (const CalculationGrid& grid : grids) {
     if (grid.kind == GridKind::Points) {
       for (std::size_t i = 0; i < grid.size(); ++i) add(grid.position(i));

@@ -8,6 +8,7 @@
 
 #include "geometry/bounding_box.hpp"
 #include "geometry/convex_polyhedron.hpp"
+#include "scene/luminaire.hpp"
 #include "scene/parameters.hpp"
 #include "scene/scene_warning.hpp"
 
@@ -104,6 +105,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Solid> solids;  // includes the room's slabs (named room.floor, room.wall-y0.1, ...)
   std::vector<Source> sources;
+  std::vector<Luminaire> luminaires;  // photometric luminaires, each with its instances
   std::vector<CalculationGrid> grids;
   std::vector<View> views;
   std::optional<Room> room;
@@ -111,7 +113,8 @@ struct Scene {
   // What loaded but is probably a mistake (docs/scene-format.md, "Warnings"), in file order.
   std::vector<SceneWarning> warnings;
 
-  // The bounding box of all geometry: solids, sources and calculation points (m).
+  // The bounding box of all geometry: solids, sources, luminaires' photometric centres and
+  // calculation points (m).
   BoundingBox bounds() const;
   // Its diagonal (m); the scale of Tolerance.
   double size() const;

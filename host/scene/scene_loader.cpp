@@ -12,6 +12,7 @@
 #include "geometry/tolerance.hpp"
 #include "scene/grid_builder.hpp"
 #include "scene/grid_placement.hpp"
+#include "scene/luminaire_builder.hpp"
 #include "scene/parameter_reader.hpp"
 #include "scene/room_builder.hpp"
 #include "scene/shape_builder.hpp"
@@ -45,6 +46,11 @@ double specSize(const SceneSpec& spec) {
   }
   for (const SourceSpec& source : spec.sources) {
     for (const Vec3& p : shapeExtentPoints(source.shape)) add(p);
+  }
+  for (const LuminaireSpec& luminaire : spec.luminaires) {
+    add(luminaire.position);
+    add(luminaire.position + Vec3((luminaire.countX - 1) * luminaire.spacingX,
+                                  (luminaire.countY - 1) * luminaire.spacingY, 0.0));
   }
   for (const GridSpec& grid : spec.grids) {
     if (const auto* rect = std::get_if<RectGridSpec>(&grid.layout)) {
@@ -100,6 +106,9 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   // Sources before solids: a curved solid orients its facets towards the strongest source.
   for (const SourceSpec& source : spec.sources) {
     scene.sources.push_back(buildSource(source, scene.room, context));
+  }
+  for (const LuminaireSpec& luminaire : spec.luminaires) {
+    scene.luminaires.push_back(buildLuminaire(luminaire, context));
   }
   context.towardsLight = [&](const Vec3& point) {
     return towardsStrongestSource(scene.sources, point);

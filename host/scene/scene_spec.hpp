@@ -120,11 +120,28 @@ struct ViewSpec : View {
   Where where, eyeWhere;
 };
 
+// A `luminaires:` entry as written: the file is read when the scene is built.
+struct LuminaireSpec {
+  std::string name;
+  std::string file;  // relative to the scene file
+  Where fileWhere;
+  Vec3 position = Vec3::Zero();  // photometric centre, m
+  LuminaireAim aim;
+  int countX = 1, countY = 1;             // array: instances along the scene's x and y
+  double spacingX = 0.0, spacingY = 0.0;  // m
+  std::optional<double> fluxLm;           // overrides the file's lamp lumens
+  Where fluxWhere;
+  double maintenanceFactor = 1.0;
+  LuminaireModel model = LuminaireModel::Point;
+  Where where;
+};
+
 struct SceneSpec {
   std::vector<Material> materials;
   std::optional<RoomSpec> room;
   std::vector<SolidSpec> solids;
   std::vector<SourceSpec> sources;
+  std::vector<LuminaireSpec> luminaires;
   std::vector<GridSpec> grids;
   std::vector<ViewSpec> views;
 };

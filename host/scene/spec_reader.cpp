@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "scene/grid_reader.hpp"
+#include "scene/luminaire_reader.hpp"
 #include "scene/shape_reader.hpp"
 #include "scene/view_reader.hpp"
 
@@ -222,9 +223,9 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   }
   const MapView root = reader.map(reader.root(document), "the scene");
   // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
-  root.allowOnly(
-      {"penumbra", "parameters", "materials", "room", "solids", "sources", "grids", "views"},
-      "a scene");
+  root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids",
+                  "views", "luminaires"},
+                 "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
         Where{root.where().line, "penumbra"},
@@ -244,6 +245,8 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
       reader, root, "solids", [&](const Field& item) { return readSolid(reader, item, material); });
   spec.sources = readList<SourceSpec>(reader, root, "sources",
                                       [&](const Field& item) { return readSource(reader, item); });
+  spec.luminaires = readList<LuminaireSpec>(
+      reader, root, "luminaires", [&](const Field& item) { return readLuminaire(reader, item); });
   spec.grids = readList<GridSpec>(reader, root, "grids",
                                   [&](const Field& item) { return readGrid(reader, item); });
   spec.views = readList<ViewSpec>(reader, root, "views",

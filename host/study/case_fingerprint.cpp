@@ -71,6 +71,21 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
     h.add(source.color);
     for (const ConvexPolygon& face : source.faces) addPolygon(h, face);
   }
+  // A luminaire by what it emits (its table, so that an edited file counts) and where.
+  for (const Luminaire& luminaire : scene.luminaires) {
+    h.add(std::string_view("luminaire " + luminaire.name));
+    h.add(std::string_view(luminaireModelName(luminaire.model)));
+    h.add(luminaire.intensityScale);
+    const photometry::LightDistribution& d = *luminaire.distribution;
+    for (double a : d.planeAnglesDeg()) h.add(a);
+    for (double a : d.inPlaneAnglesDeg()) h.add(a);
+    for (std::size_t j = 0; j < d.planeAnglesDeg().size(); ++j)
+      for (std::size_t k = 0; k < d.inPlaneAnglesDeg().size(); ++k) h.add(d.candela(j, k));
+    for (const LuminaireInstance& instance : luminaire.instances) {
+      h.add(instance.position);
+      for (int c = 0; c < 3; ++c) h.add(Vec3(instance.toScene.col(c)));
+    }
+  }
   for (const std::string& name : outputs.grids) {
     for (const CalculationGrid& grid : scene.grids) {
       if (grid.name != name) continue;
