@@ -258,11 +258,18 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   compute::Device& d = *state_->device;
   const std::size_t outValues = bySource ? padded * std::max(sourceCount, 1) : padded;
   const std::size_t classBytes = padded * std::max(sourceCount, 1);
-  const std::vector<std::size_t> batch = {
-      padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
-      padded * sizeof(float),    padded * sizeof(float),     padded * sizeof(float),
-      padded * sizeof(cl_int),   compute::byteSize(table.entries), compute::byteSize(table.candidates),
-      outValues * sizeof(float), workItems * sizeof(cl_int), classBytes};
+  const std::vector<std::size_t> batch = {padded * sizeof(float),
+                                          padded * sizeof(float),
+                                          padded * sizeof(float),
+                                          padded * sizeof(float),
+                                          padded * sizeof(float),
+                                          padded * sizeof(float),
+                                          padded * sizeof(cl_int),
+                                          compute::byteSize(table.entries),
+                                          compute::byteSize(table.candidates),
+                                          outValues * sizeof(float),
+                                          workItems * sizeof(cl_int),
+                                          classBytes};
   if (!compute::fitsDevice(d.info(), batch, state_->sceneBytes)) {
     // Too many points for the device at once: halves cut on a work-group boundary give the same
     // work-items, and so the same values, as one launch would.
