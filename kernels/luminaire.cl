@@ -9,18 +9,20 @@
  * point; the luminaires' sum is compensated (prelude.cl). The host binds the arguments in this
  * order (engine/luminaire_engine.cpp). */
 
-#include "prelude.cl"
 #include "photometric_table.cl"
+#include "prelude.cl"
 #include "segment_shadow.cl"
 
-__kernel void luminaire_illuminance(
-    const PnLuminaireParams params, __global const float* point_x, __global const float* point_y,
-    __global const float* point_z, __global const float* normal_x, __global const float* normal_y,
-    __global const float* normal_z, __global const int* point_solid,
-    __global const PnLuminaire* luminaires, __global const PnCandelaTable* tables,
-    __global const float* angles, __global const float* candela,
-    __global const PnShadowSolid* solids, __global const float4* solid_planes,
-    __global float* illuminance_lx, __global uchar* seen) {
+__kernel void luminaire_illuminance(const PnLuminaireParams params, __global const float* point_x,
+                                    __global const float* point_y, __global const float* point_z,
+                                    __global const float* normal_x, __global const float* normal_y,
+                                    __global const float* normal_z, __global const int* point_solid,
+                                    __global const PnLuminaire* luminaires,
+                                    __global const PnCandelaTable* tables,
+                                    __global const float* angles, __global const float* candela,
+                                    __global const PnShadowSolid* solids,
+                                    __global const float4* solid_planes,
+                                    __global float* illuminance_lx, __global uchar* seen) {
   const int i = get_global_id(0);
   if (i >= params.pointCount) return;
   const float3 p = (float3)(point_x[i], point_y[i], point_z[i]);
@@ -42,7 +44,7 @@ __kernel void luminaire_illuminance(
     if (!lit) continue;
     const float3 away = -w; /* from the centre towards the point */
     const float3 in_frame = (float3)(dot(lum.toLocal0.xyz, away), dot(lum.toLocal1.xyz, away),
-                                  dot(lum.toLocal2.xyz, away));
+                                     dot(lum.toLocal2.xyz, away));
     const float intensity = pn_table_intensity(tables[lum.table], angles, candela, in_frame);
     pn_sum_add(&e, intensity * cos_theta / d2);
   }

@@ -32,8 +32,7 @@ inline bool pn_segment_blocked(PnShadowSolid s, __global const float4* planes, f
 
 /* Whether any solid but the point's own blocks the segment p → c. */
 inline bool pn_point_shaded(__global const PnShadowSolid* solids, int solid_count,
-                            __global const float4* planes, int own, float3 p, float3 c,
-                            float eps) {
+                            __global const float4* planes, int own, float3 p, float3 c, float eps) {
   for (int i = 0; i < solid_count; ++i) {
     const PnShadowSolid s = solids[i];
     if (s.solid != own && pn_segment_blocked(s, planes, p, c, eps)) return true;
