@@ -259,5 +259,34 @@ TEST_F(TotalIlluminance, HigherReflectanceNeverLowersAndLightScales) {
   }
 }
 
+// A sweep keeps one estimator: a case that changes only reflectances or the sources' output takes
+// the transfer from the cache and gives what a fresh solve gives, bit for bit; a case that
+// changes the geometry computes its own.
+TEST_F(TotalIlluminance, CasesThatKeepTheGeometryReuseTheTransfer) {
+  const Scene base = office();
+  const std::vector<SamplePoint> points = workPlane(base);
+  EstimatorOptions options;
+  options.device = "cpu";
+  Estimator sweep(options, base);
+  EXPECT_FALSE(sweep.interreflection()->transferReused);
+  struct Case {
+    ParameterValues values;
+    bool reused;
+  };
+  const std::vector<Case> cases = {{{{"floor_reflectance", 0.6}}, true},
+                                   {{{"panel_flux_lm", 5000}}, true},
+                                   {{{"window_width_m", 1.2}}, false},
+                                   {{{"floor_reflectance", 0.3}}, true}};
+  for (const Case& c : cases) {
+    const Scene scene = office(c.values);
+    sweep.setScene(scene);
+    EXPECT_EQ(sweep.interreflection()->transferReused, c.reused) << c.values.front().name;
+    const PointIlluminance cached = sweep.illuminance(points);
+    const PointIlluminance fresh = total(scene, points);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      ASSERT_EQ(cached.total[i], fresh.total[i]) << c.values.front().name << " point " << i;
+  }
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -5,9 +5,12 @@
 namespace penumbra::help {
 
 inline constexpr const char* kProgram =
-    "penumbra computes the exact direct illuminance E, in lux (lx), that area light sources "
-    "(luminaires, windows; Lambertian, luminance in cd/m2) give at the points of calculation "
-    "grids, with exact shadows and penumbrae from convex solids (walls, slabs, furniture).\n"
+    "penumbra computes the illuminance E, in lux (lx), that area light sources (panels, "
+    "windows; Lambertian, luminance in cd/m2) and photometric luminaires (IES, EULUMDAT) give "
+    "at the points of calculation grids: the direct light exactly, with exact shadows and "
+    "penumbrae from convex solids (walls, slabs, furniture), plus the light the room's "
+    "surfaces reflect (radiosity with the same exact integral; faces without a material are "
+    "black).\n"
     "Scenes are YAML files in metres (format: docs/scene-format.md).";
 
 inline constexpr const char* kProgramFooter =

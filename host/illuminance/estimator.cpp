@@ -39,7 +39,7 @@ void Estimator::solveInterreflection() {
   interreflection_.reset();
   if (withInterreflection_) {
     interreflection_ = std::make_unique<Interreflection>(*clDevice_, *scene_, *engine_, mesh_,
-                                                         EngineOptions{culling_});
+                                                         EngineOptions{culling_}, &transferCache_);
   }
 }
 

@@ -83,6 +83,7 @@ class Estimator {
   MeshOptions mesh_;
   std::optional<compute::Device> clDevice_;
   std::unique_ptr<IlluminanceEngine> engine_;
+  TransferCache transferCache_;  // kept across setScene: a sweep's cases share transfers
   std::unique_ptr<Interreflection> interreflection_;
 };
 

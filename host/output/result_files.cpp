@@ -207,12 +207,12 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"quadrature_nodes", r.nodes},
         {"surface_area_m2", r.surfaceArea},
         {"relative_residual", r.residual},
+        {"transfer_reused", r.transferReused},
         {"solids_without_material", black},
         {"timing",
          {{"mesh_s", r.meshSeconds},
           {"transfer_s", r.transferSeconds},
-          {"solve_s", r.solveSeconds},
-          {"gather_setup_s", r.setupSeconds}}},
+          {"solve_s", r.solveSeconds}}},
     };
   }
   if (!report.luminaires.empty()) {

@@ -21,11 +21,6 @@ Scene elementScene(const Scene& scene, const SurfaceMesh& mesh) {
   return elements;
 }
 
-void setElementLuminance(Scene& elements, const Eigen::VectorXd& luminance) {
-  for (std::size_t i = 0; i < elements.sources.size(); ++i)
-    elements.sources[i].luminance = luminance[static_cast<Eigen::Index>(i)];
-}
-
 Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh) {
   const auto n = static_cast<Eigen::Index>(mesh.elements.size());
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(n, n);

@@ -15,9 +15,6 @@ namespace penumbra {
 // grids and views of `scene` are left out.
 Scene elementScene(const Scene& scene, const SurfaceMesh& mesh);
 
-// Sets each element source's luminance (cd/m², one per element, in mesh order).
-void setElementLuminance(Scene& elements, const Eigen::VectorXd& luminance);
-
 // t(i, j): the mean over element i's nodes (by their weights) of the illuminance in lx that
 // element j gives at 1 cd/m². `engine` must hold elementScene(scene, mesh) with unit
 // luminances. Within the quadrature's error, area(i)·t(i, j) = area(j)·t(j, i) (reciprocity),

@@ -11,11 +11,16 @@ namespace penumbra {
 
 namespace {
 
-// Direct E per channel at every node: each source's E split into channels by its colour
-// relative to the colour's luminance (a source's `color` keeps its photometric luminance), and
-// the photometric luminaires' E in every channel.
-Eigen::MatrixX3d nodeDirect(IlluminanceEngine& engine, const Scene& scene,
-                            const SurfaceMesh& mesh) {
+// The direct light at every node: E per channel (each source's E split into channels by its
+// colour relative to the colour's luminance, as a source's `color` keeps its photometric
+// luminance; the photometric luminaires white), and E per light group, photometric: each
+// Lambertian source alone, then the luminaires together.
+struct NodeLight {
+  Eigen::MatrixX3d direct;  // lx, [node][channel]
+  Eigen::MatrixXd byGroup;  // lx, [node][group]
+};
+
+NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh) {
   const std::size_t sources = scene.sources.size();
   std::vector<Eigen::Vector3d> channel(sources);
   for (std::size_t s = 0; s < sources; ++s) {
@@ -23,71 +28,97 @@ Eigen::MatrixX3d nodeDirect(IlluminanceEngine& engine, const Scene& scene,
     channel[s] = color / photometric(color);
   }
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
-  Eigen::MatrixX3d direct = Eigen::MatrixX3d::Zero(n, 3);
-  if (n == 0) return direct;
+  const bool luminaires = !scene.luminaires.empty();
+  NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
+                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires))};
+  if (n == 0) return light;
   const IlluminanceResult result = engine.evaluate(mesh.nodes, true);
   for (Eigen::Index node = 0; node < n; ++node) {
     for (std::size_t s = 0; s < sources; ++s) {
-      direct.row(node) +=
-          result.bySource[static_cast<std::size_t>(node) * sources + s] * channel[s].transpose();
+      const double e = result.bySource[static_cast<std::size_t>(node) * sources + s];
+      light.direct.row(node) += e * channel[s].transpose();
+      light.byGroup(node, static_cast<Eigen::Index>(s)) = e;
     }
-    // Photometric luminaires are white.
-    if (!result.luminaires.empty())
-      direct.row(node).array() += result.luminaires[static_cast<std::size_t>(node)];
+    if (!result.luminaires.empty()) {
+      const double e = result.luminaires[static_cast<std::size_t>(node)];
+      light.direct.row(node).array() += e;
+      light.byGroup(node, static_cast<Eigen::Index>(sources)) = e;
+    }
   }
-  return direct;
+  return light;
 }
 
 // Element averages of node values (the nodes' weights).
-Eigen::MatrixX3d elementAverage(const SurfaceMesh& mesh, const Eigen::MatrixX3d& atNodes) {
+Eigen::MatrixXd elementAverage(const SurfaceMesh& mesh, const Eigen::MatrixXd& atNodes) {
   const auto n = static_cast<Eigen::Index>(mesh.elements.size());
-  Eigen::MatrixX3d average = Eigen::MatrixX3d::Zero(n, 3);
+  Eigen::MatrixXd average = Eigen::MatrixXd::Zero(n, atNodes.cols());
   for (Eigen::Index i = 0; i < n; ++i)
     for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node)
       average.row(i) += mesh.weights[node] * atNodes.row(static_cast<Eigen::Index>(node));
   return average;
 }
 
-// Elements whose first reflection is uneven: ρ·(Emax - Emin)·A over the element's nodes (lm)
-// above `fraction` of the whole first reflected flux Σ ρ·E·A.
-std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixX3d& atNodes,
+// Elements where the direct light is uneven. Each light group's node E is scaled to unit flux
+// onto the elements (Σ E·A), the groups are added, and an element is split when (Emax - Emin)·A
+// of that sum over its nodes exceeds `fraction` of its whole flux (the number of lit groups).
+// Neither reflectances nor the sources' output enter, only where the sources are and what they
+// see: a study varying reflectances or fluxes keeps its mesh and reuses the transfer
+// (transfer_cache.hpp).
+std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixXd& byGroup,
                                  double fraction) {
   const std::size_t n = mesh.elements.size();
-  std::vector<double> spread(n, 0.0);
-  double reflected = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double rho = photometric(mesh.elements[i].reflectance);
-    double lo = INFINITY, hi = -INFINITY, mean = 0.0;
-    for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node) {
-      const double e = photometric(atNodes.row(static_cast<Eigen::Index>(node)).transpose());
-      lo = std::min(lo, e), hi = std::max(hi, e);
-      mean += mesh.weights[node] * e;
-    }
-    spread[i] = rho * (hi - lo) * mesh.elements[i].area;
-    reflected += rho * mean * mesh.elements[i].area;
+  const Eigen::MatrixXd average = elementAverage(mesh, byGroup);
+  Eigen::VectorXd scale = Eigen::VectorXd::Zero(byGroup.cols());
+  double groups = 0.0;
+  for (Eigen::Index g = 0; g < byGroup.cols(); ++g) {
+    double flux = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      flux += average(static_cast<Eigen::Index>(i), g) * mesh.elements[i].area;
+    if (flux > 0.0) scale[g] = 1.0 / flux, groups += 1.0;
   }
+  const Eigen::VectorXd balanced = byGroup * scale;
   std::vector<char> split(n, 0);
-  for (std::size_t i = 0; i < n; ++i) split[i] = spread[i] > fraction * reflected;
+  for (std::size_t i = 0; i < n; ++i) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node) {
+      const double e = balanced[static_cast<Eigen::Index>(node)];
+      lo = std::min(lo, e), hi = std::max(hi, e);
+    }
+    split[i] = (hi - lo) * mesh.elements[i].area > fraction * groups;
+  }
   return split;
+}
+
+// The elements as unit sources, the kernel for them, and the transfer between them.
+std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const Scene& scene,
+                                                  const SurfaceMesh& mesh,
+                                                  const EngineOptions& engine) {
+  const auto start = Clock::now();
+  auto geometry = std::make_shared<GeometryTransfer>();
+  geometry->elements = elementScene(scene, mesh);
+  geometry->gather = std::make_unique<IlluminanceEngine>(device, geometry->elements, engine);
+  geometry->transfer = elementTransfer(*geometry->gather, mesh);
+  geometry->seconds = secondsSince(start);
+  return geometry;
 }
 
 }  // namespace
 
 Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                  IlluminanceEngine& direct, const MeshOptions& mesh,
-                                 const EngineOptions& engine) {
+                                 const EngineOptions& engine, TransferCache* cache) {
   auto start = Clock::now();
   // The mesh, refined where the direct light is uneven; the direct E at its nodes comes with it.
   mesh_ = buildSurfaceMesh(scene, mesh);
-  Eigen::MatrixX3d atNodes = nodeDirect(direct, scene, mesh_);
+  NodeLight light = nodeLight(direct, scene, mesh_);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   for (int level = 0; level < mesh.refinementLevels; ++level) {
-    const std::vector<char> split = unevenElements(mesh_, atNodes, mesh.refinement);
+    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
-    atNodes = nodeDirect(direct, scene, mesh_);
+    light = nodeLight(direct, scene, mesh_);
   }
-  direct_ = elementAverage(mesh_, atNodes);
+  direct_ = elementAverage(mesh_, light.direct);
   report_.elements = mesh_.elements.size();
   report_.elementSize = mesh.elementSize;
   report_.nodes = mesh_.nodes.size();
@@ -95,31 +126,46 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   report_.blackSolids = mesh_.blackSolids;
   report_.meshSeconds = secondsSince(start);
 
-  start = Clock::now();
-  elements_ = elementScene(scene, mesh_);
-  gather_ = std::make_unique<IlluminanceEngine>(device, elements_, engine);
-  const Eigen::MatrixXd transfer = elementTransfer(*gather_, mesh_);
-  report_.transferSeconds = secondsSince(start);
+  if (mesh_.elements.empty()) return;
+  const std::uint64_t key = transferFingerprint(scene, mesh_);
+  if (cache) geometry_ = cache->find(key);
+  report_.transferReused = geometry_ != nullptr;
+  if (!geometry_) {
+    geometry_ = computeTransfer(device, scene, mesh_, engine);
+    report_.transferSeconds = geometry_->seconds;
+    if (cache) cache->insert(key, geometry_);
+  }
 
   start = Clock::now();
-  solution_ = solveRadiosity(transfer, mesh_, direct_);
+  solution_ = solveRadiosity(geometry_->transfer, mesh_, direct_);
   report_.residual = solution_.residual;
   report_.solveSeconds = secondsSince(start);
-
-  start = Clock::now();
-  Eigen::VectorXd luminance(solution_.luminance.rows());
-  for (Eigen::Index i = 0; i < luminance.size(); ++i)
-    luminance[i] = photometric(solution_.luminance.row(i).transpose());
-  setElementLuminance(elements_, luminance);
-  gather_->setScene(elements_);
-  report_.setupSeconds = secondsSince(start);
+  luminance_.resize(solution_.luminance.rows());
+  for (Eigen::Index i = 0; i < luminance_.size(); ++i)
+    luminance_[i] = photometric(solution_.luminance.row(i).transpose());
 }
 
 Interreflection::~Interreflection() = default;
 
 std::vector<double> Interreflection::indirect(std::span<const SamplePoint> points) {
-  if (mesh_.elements.empty()) return std::vector<double>(points.size(), 0.0);
-  return gather_->illuminance(points);
+  std::vector<double> e(points.size(), 0.0);
+  if (!geometry_) return e;
+  // Each element's E at unit luminance, weighted by its solved luminance; about 2^22 point·element
+  // values (16 MB of float) at a time.
+  const std::size_t elements = mesh_.elements.size();
+  const std::size_t batch = std::max<std::size_t>(1, (std::size_t{1} << 22) / elements);
+  for (std::size_t first = 0; first < points.size(); first += batch) {
+    const std::size_t count = std::min(batch, points.size() - first);
+    std::size_t stride = 0;
+    const std::vector<float> unit =
+        geometry_->gather->illuminanceBySource(points.subspan(first, count), stride);
+    for (std::size_t j = 0; j < elements; ++j) {
+      const double l = luminance_[static_cast<Eigen::Index>(j)];
+      const float* row = unit.data() + j * stride;
+      for (std::size_t p = 0; p < count; ++p) e[first + p] += l * row[p];
+    }
+  }
+  return e;
 }
 
 }  // namespace penumbra

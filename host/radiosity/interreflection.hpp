@@ -14,6 +14,7 @@
 #include "engine/illuminance_engine.hpp"
 #include "radiosity/radiosity_solver.hpp"
 #include "radiosity/surface_mesh.hpp"
+#include "radiosity/transfer_cache.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -25,10 +26,10 @@ struct InterreflectionReport {
   std::size_t nodes = 0;                 // quadrature nodes, where the transfer is evaluated
   double surfaceArea = 0.0;              // m², all elements
   double residual = 0.0;                 // of the linear solve, relative
-  double meshSeconds = 0.0;              // faces reached, cut into elements
-  double transferSeconds = 0.0;          // element-to-element transfer (kernel)
+  double meshSeconds = 0.0;              // faces reached, cut into elements, direct E at nodes
+  double transferSeconds = 0.0;          // element-to-element transfer (kernel); 0 when reused
   double solveSeconds = 0.0;             // LU factorisation and solve
-  double setupSeconds = 0.0;             // the gather's element scene on the device
+  bool transferReused = false;           // the geometry's transfer came from the cache
   std::vector<std::string> blackSolids;  // reached by light, no material: black
 };
 
@@ -36,9 +37,11 @@ class Interreflection {
  public:
   // Solves the radiosity equations for `scene` (which must outlive this object). `direct`
   // answers for `scene` (its direct illuminance); its device runs the element kernels too.
-  // `engine` are the options of the element kernels (the transfer and the gather).
+  // `engine` are the options of the element kernels (the transfer and the gather). With a
+  // `cache`, the transfer of a geometry met before is taken from it, a new one is put in it.
   Interreflection(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
-                  const MeshOptions& mesh = {}, const EngineOptions& engine = {});
+                  const MeshOptions& mesh = {}, const EngineOptions& engine = {},
+                  TransferCache* cache = nullptr);
   ~Interreflection();
 
   // Interreflected E in lx at each point (the photometric sum of the channels).
@@ -52,8 +55,8 @@ class Interreflection {
 
  private:
   SurfaceMesh mesh_;
-  Scene elements_;
-  std::unique_ptr<IlluminanceEngine> gather_;
+  std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements
+  Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
   Eigen::MatrixX3d direct_;
   RadiositySolution solution_;
   InterreflectionReport report_;

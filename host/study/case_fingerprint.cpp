@@ -1,49 +1,10 @@
 #include "study/case_fingerprint.hpp"
 
-#include <bit>
-#include <cstdint>
-
 #include <fmt/format.h>
 
+#include "geometry/fnv1a_hash.hpp"
+
 namespace penumbra {
-namespace {
-
-// FNV-1a: tells changed inputs apart; nothing here needs a cryptographic hash.
-class Fnv1a {
- public:
-  void add(std::string_view text) {
-    for (unsigned char c : text) {
-      hash_ ^= c;
-      hash_ *= 0x100000001b3ULL;
-    }
-    add('\n');
-  }
-  void add(char c) {
-    hash_ ^= static_cast<unsigned char>(c);
-    hash_ *= 0x100000001b3ULL;
-  }
-  // The bits of the double: exact, and fast enough for grids of millions of points.
-  void add(double value) {
-    const auto bits = std::bit_cast<std::uint64_t>(value);
-    for (int byte = 0; byte < 8; ++byte) add(static_cast<char>((bits >> (8 * byte)) & 0xff));
-  }
-  void add(const Vec3& v) {
-    add(v.x());
-    add(v.y());
-    add(v.z());
-  }
-  std::string hex() const { return fmt::format("{:016x}", hash_); }
-
- private:
-  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
-};
-
-void addPolygon(Fnv1a& h, const ConvexPolygon& polygon) {
-  h.add(std::string_view("polygon"));
-  for (const Vec3& v : polygon.vertices()) h.add(v);
-}
-
-}  // namespace
 
 std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
   Fnv1a h;
@@ -62,14 +23,14 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
     h.add(std::string_view(solid.name));
     h.add(static_cast<double>(solid.material));
     for (std::size_t f = 0; f < solid.shape.faces().size(); ++f) {
-      addPolygon(h, solid.shape.facePolygon(static_cast<int>(f)));
+      h.add(solid.shape.facePolygon(static_cast<int>(f)));
     }
   }
   for (const Source& source : scene.sources) {
     h.add(std::string_view(source.name));
     h.add(source.luminance);
     h.add(source.color);
-    for (const ConvexPolygon& face : source.faces) addPolygon(h, face);
+    for (const ConvexPolygon& face : source.faces) h.add(face);
   }
   // A luminaire by what it emits (its table, so that an edited file counts) and where.
   for (const Luminaire& luminaire : scene.luminaires) {
@@ -97,7 +58,7 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
       }
     }
   }
-  return h.hex();
+  return fmt::format("{:016x}", h.value());
 }
 
 }  // namespace penumbra
