@@ -205,6 +205,34 @@ TEST(Interreflection, BoxRoomAgainstCollocation) {
   }
 }
 
+// The dense solver's limit: a mesh larger before refinement is refused with an element size
+// that fits; refinement stops at the limit, splitting the most uneven elements first.
+TEST(Interreflection, MeshesStayWithinTheDenseSolversLimit) {
+  TempDir dir("interreflection");
+  const Scene scene = closedRoom(dir, "[4, 3, 3]");
+  IlluminanceEngine direct(cpuDevice(), scene);
+  MeshOptions options;
+  const Interreflection free(cpuDevice(), scene, direct, options);
+  EXPECT_FALSE(free.report().refinementCapped);
+  const std::size_t base = buildSurfaceMesh(scene, options).elements.size();
+  ASSERT_GT(free.report().elements, base + 30);
+
+  options.maxElements = base + 30;
+  const Interreflection capped(cpuDevice(), scene, direct, options);
+  EXPECT_TRUE(capped.report().refinementCapped);
+  EXPECT_LE(capped.report().elements, options.maxElements);
+  EXPECT_GT(capped.report().elements, base);
+
+  options.maxElements = base - 1;
+  try {
+    Interreflection refused(cpuDevice(), scene, direct, options);
+    ADD_FAILURE() << "a mesh beyond the limit was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("use --element-size 0.55 or larger"), std::string::npos)
+        << e.what();
+  }
+}
+
 // The total through Estimator: ρ = 0 gives the direct E bit for bit, a higher ρ never lowers E,
 // twice the light gives twice E.
 class TotalIlluminance : public ::testing::Test {

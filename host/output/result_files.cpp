@@ -208,6 +208,7 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"surface_area_m2", r.surfaceArea},
         {"relative_residual", r.residual},
         {"transfer_reused", r.transferReused},
+        {"refinement_capped", r.refinementCapped},
         {"solids_without_material", black},
         {"timing",
          {{"mesh_s", r.meshSeconds},

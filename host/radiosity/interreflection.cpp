@@ -2,6 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <stdexcept>
+#include <utility>
+
+#include <fmt/format.h>
 
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_transfer.hpp"
@@ -63,9 +68,10 @@ Eigen::MatrixXd elementAverage(const SurfaceMesh& mesh, const Eigen::MatrixXd& a
 // of that sum over its nodes exceeds `fraction` of its whole flux (the number of lit groups).
 // Neither reflectances nor the sources' output enter, only where the sources are and what they
 // see: a study varying reflectances or fluxes keeps its mesh and reuses the transfer
-// (transfer_cache.hpp).
+// (transfer_cache.hpp). When splitting them all would take the mesh past `maxElements`, the most
+// uneven are split (a split adds up to three elements) and `capped` is set.
 std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixXd& byGroup,
-                                 double fraction) {
+                                 double fraction, std::size_t maxElements, bool& capped) {
   const std::size_t n = mesh.elements.size();
   const Eigen::MatrixXd average = elementAverage(mesh, byGroup);
   Eigen::VectorXd scale = Eigen::VectorXd::Zero(byGroup.cols());
@@ -77,15 +83,24 @@ std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixXd&
     if (flux > 0.0) scale[g] = 1.0 / flux, groups += 1.0;
   }
   const Eigen::VectorXd balanced = byGroup * scale;
-  std::vector<char> split(n, 0);
+  std::vector<std::pair<double, std::size_t>> uneven;  // (spread, element), above the bound
   for (std::size_t i = 0; i < n; ++i) {
     double lo = INFINITY, hi = -INFINITY;
     for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node) {
       const double e = balanced[static_cast<Eigen::Index>(node)];
       lo = std::min(lo, e), hi = std::max(hi, e);
     }
-    split[i] = (hi - lo) * mesh.elements[i].area > fraction * groups;
+    const double spread = (hi - lo) * mesh.elements[i].area;
+    if (spread > fraction * groups) uneven.emplace_back(spread, i);
   }
+  const std::size_t room = maxElements > n ? (maxElements - n) / 3 : 0;
+  if (uneven.size() > room) {
+    capped = true;
+    std::sort(uneven.begin(), uneven.end(), std::greater<>());  // ties: higher index first
+    uneven.resize(room);
+  }
+  std::vector<char> split(n, 0);
+  for (const auto& [spread, i] : uneven) split[i] = 1;
   return split;
 }
 
@@ -112,8 +127,20 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   mesh_ = buildSurfaceMesh(scene, mesh);
   NodeLight light = nodeLight(direct, scene, mesh_);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  if (mesh_.elements.size() > mesh.maxElements) {
+    // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
+    const double fits = std::ceil(20.0 * mesh.elementSize *
+                                  std::sqrt(static_cast<double>(mesh_.elements.size()) /
+                                            static_cast<double>(mesh.maxElements))) /
+                        20.0;
+    throw std::runtime_error(fmt::format(
+        "interreflection: {} elements at --element-size {} m, more than the {} the dense "
+        "solver takes; use --element-size {} or larger, or --direct-only",
+        mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits));
+  }
   for (int level = 0; level < mesh.refinementLevels; ++level) {
-    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement);
+    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
+                                                   mesh.maxElements, report_.refinementCapped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_);

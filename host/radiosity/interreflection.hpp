@@ -30,6 +30,7 @@ struct InterreflectionReport {
   double transferSeconds = 0.0;          // element-to-element transfer (kernel); 0 when reused
   double solveSeconds = 0.0;             // LU factorisation and solve
   bool transferReused = false;           // the geometry's transfer came from the cache
+  bool refinementCapped = false;         // refinement stopped at MeshOptions::maxElements
   std::vector<std::string> blackSolids;  // reached by light, no material: black
 };
 

@@ -26,6 +26,10 @@ struct MeshOptions {
   // first reflected flux Σ ρ·E·area.
   double refinement = 1e-3;
   int refinementLevels = 3;
+  // The most elements the dense transfer and LU take (8 bytes × N² each: 0.5 GB at 8 000).
+  // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
+  // any refinement is refused with the element size that would fit.
+  std::size_t maxElements = 8000;
 };
 
 struct SurfaceElement {
