@@ -122,4 +122,31 @@ std::vector<double> Interreflection::indirect(std::span<const SamplePoint> point
   return gather_->illuminance(points);
 }
 
+std::vector<Eigen::Vector3d> Interreflection::indirectChannels(
+    std::span<const SamplePoint> points) {
+  std::vector<Eigen::Vector3d> out(points.size(), Eigen::Vector3d::Zero());
+  const std::size_t n = mesh_.elements.size();
+  if (n == 0) return out;
+  // Each element's E at its photometric luminance, split into channels by its luminance's
+  // colour; about 2^22 point·element values (16 MB of float) at a time.
+  std::vector<Eigen::Vector3d> colour(n, Eigen::Vector3d::Zero());
+  for (std::size_t j = 0; j < n; ++j) {
+    const Eigen::Vector3d l = solution_.luminance.row(static_cast<Eigen::Index>(j)).transpose();
+    const double y = photometric(l);
+    if (y > 0.0) colour[j] = l / y;
+  }
+  const std::size_t batch = std::max<std::size_t>(1, (std::size_t{1} << 22) / n);
+  for (std::size_t first = 0; first < points.size(); first += batch) {
+    const std::size_t count = std::min(batch, points.size() - first);
+    std::size_t stride = 0;
+    const std::vector<float> e = gather_->illuminanceBySource(points.subspan(first, count), stride);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (colour[j].isZero()) continue;
+      const float* row = e.data() + j * stride;
+      for (std::size_t i = 0; i < count; ++i) out[first + i] += double(row[i]) * colour[j];
+    }
+  }
+  return out;
+}
+
 }  // namespace penumbra

@@ -43,6 +43,10 @@ class Interreflection {
 
   // Interreflected E in lx at each point (the photometric sum of the channels).
   std::vector<double> indirect(std::span<const SamplePoint> points);
+  // Interreflected E per RGB channel at each point (lx; L = ρ_c·E_c/π as for a source's
+  // colour), from the same gather: each element's part weighted by its solved luminance in that
+  // channel. The photometric sum of the channels is indirect() to float rounding.
+  std::vector<Eigen::Vector3d> indirectChannels(std::span<const SamplePoint> points);
 
   const SurfaceMesh& mesh() const { return mesh_; }
   const RadiositySolution& solution() const { return solution_; }
