@@ -15,6 +15,9 @@
 #include "output/image_files.hpp"
 #include "penumbra_process.hpp"
 #include "radiance_picture.hpp"
+#include "render/renderer.hpp"
+#include "scene/scene_loader.hpp"
+#include "test_device.hpp"
 
 namespace penumbra {
 namespace {
@@ -193,6 +196,60 @@ TEST(RenderCli, HelpTeachesOutputsAndUnits) {
   EXPECT_EQ(r.status, 0);
   for (const char* words : {"cd/m²", "lx", "faceid", "--interval", "--spp", "views:"})
     EXPECT_NE(r.out.find(words), std::string::npos) << words;
+}
+
+const char* kCliScene = R"(penumbra: 1
+materials: {grey: 0.5, wood: [0.4, 0.3, 0.2]}
+room: {size: [4, 4, 2.8], materials: {floor: grey, ceiling: grey, walls: grey}}
+solids:
+  - {name: table, box: {min: [1, 1, 0.7], max: [2, 2, 0.75]}, material: wood}
+sources:
+  - {name: panel, rect: {center: [1.5, 2.5, 2.79], size: [0.6, 0.6], normal: [0, 0, -1]}, luminance: 3000}
+views:
+  - {name: corner, eye: [3.8, 3.8, 1.6], target: [1.5, 1.5, 0.9], fov: 80, size: [64, 48]}
+)";
+
+// `penumbra render` includes the interreflected light by default and says so in every header
+// and in render.json; `--direct-only` gives the direct renderer's images bit for bit.
+TEST(RenderCliLight, TotalByDefaultDirectOnlyBitForBit) {
+  TempDir dir("penumbra-render-light");
+  std::ofstream(dir.path() / "scene.yaml") << kCliScene;
+  const Result total = runPenumbra(dir.path(), "render scene.yaml -o total -q");
+  if (total.status == 1 && total.err.find("device") != std::string::npos)
+    GTEST_SKIP() << "no OpenCL device: " << total.err;
+  ASSERT_EQ(total.status, 0) << total.err;
+  const Result direct = runPenumbra(dir.path(), "render scene.yaml -o direct -q --direct-only");
+  ASSERT_EQ(direct.status, 0) << direct.err;
+  const fs::path t = dir.path() / "total", d = dir.path() / "direct";
+  for (const char* file : {"corner.exr", "corner.E.exr", "corner.png"}) {
+    EXPECT_EQ(metadataValue(t / file, "penumbra:light"), "total (direct + interreflected)");
+    EXPECT_EQ(metadataValue(d / file, "penumbra:light"), "direct only");
+  }
+  const nlohmann::json tj = nlohmann::json::parse(std::ifstream(t / "render.json"));
+  const nlohmann::json dj = nlohmann::json::parse(std::ifstream(d / "render.json"));
+  EXPECT_EQ(tj["light"], "total (direct + interreflected)");
+  EXPECT_EQ(dj["light"], "direct only");
+  EXPECT_GT(tj["interreflection"]["elements"].get<int>(), 0);
+  EXPECT_FALSE(dj.contains("interreflection"));
+
+  // The direct renderer in this process, on the same scene and view.
+  const Scene scene = loadScene(dir.path() / "scene.yaml");
+  Renderer renderer(cpuDevice(), scene);
+  const RenderedView reference = renderer.render(scene.views.front(), RenderOptions{});
+  const RgbImage dl = readRgbExr(d / "corner.exr"), tl = readRgbExr(t / "corner.exr");
+  const ScalarImage de = readScalarExr(d / "corner.E.exr"), te = readScalarExr(t / "corner.E.exr");
+  EXPECT_EQ(dl.rgb, reference.luminance.rgb);
+  EXPECT_EQ(de.values, reference.illuminance.values);
+  // The total adds light to every pixel that shows a solid: the room is closed.
+  int lit = 0;
+  for (std::size_t i = 0; i < de.values.size(); ++i) {
+    if (reference.faces.ids[i] == FaceIdImage::kNoSurface) continue;
+    if (de.values[i] == 0.0f && dl.rgb[i * 3 + 1] > 0.0f) continue;  // the panel
+    EXPECT_GT(te.values[i], de.values[i]) << "pixel " << i;
+    EXPECT_GE(tl.rgb[i * 3 + 1], dl.rgb[i * 3 + 1]) << "pixel " << i;
+    ++lit;
+  }
+  EXPECT_GT(lit, 64 * 48 / 2);
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ void write(const fs::path& file, const std::string& text) {
   std::ofstream(file) << text;
 }
 
-TEST(SweepRenders, EachCaseRendersItsViewsAndReflectanceScalesOnlyTheLuminance) {
+TEST(SweepRenders, EachCaseRendersItsViewsAndDirectOnlyReflectanceScalesOnlyTheLuminance) {
   TempDir dir("penumbra-sweep-renders");
   write(dir.path() / "scene.yaml", kScene);
   write(dir.path() / "study.yaml", kStudy);
@@ -55,8 +55,9 @@ TEST(SweepRenders, EachCaseRendersItsViewsAndReflectanceScalesOnlyTheLuminance) 
   SweepSettings settings;
   settings.output = dir.path() / "out";
   settings.estimator.device = "cpu";
+  settings.estimator.interreflection = false;  // direct light: E does not depend on ρ
   settings.version = "test";
-  settings.caseOutputs = {std::make_shared<CaseRenders>(study.renders, "cpu")};
+  settings.caseOutputs = {std::make_shared<CaseRenders>(study.renders, settings.estimator)};
   SweepObserver silent;
   const SweepSummary summary = runSweep(study, settings, silent);
   EXPECT_TRUE(summary.outputNotes.empty());
@@ -91,6 +92,40 @@ TEST(SweepRenders, EachCaseRendersItsViewsAndReflectanceScalesOnlyTheLuminance) 
     }
   EXPECT_GT(floorPixels, 48 * 32 / 8);
   EXPECT_GT(otherPixels, 48 * 32 / 8);
+}
+
+// The renders follow the sweep's light: with interreflection (the default) a brighter floor
+// lights the rest of the room too, so E rises on faces that are not the floor, and the case's
+// render.json says what the images include.
+TEST(SweepRenders, WithInterreflectionTheFloorsReflectanceLightsTheRoom) {
+  TempDir dir("penumbra-sweep-renders");
+  write(dir.path() / "scene.yaml", kScene);
+  write(dir.path() / "study.yaml", kStudy);
+  const Study study = loadStudy(dir.path() / "study.yaml");
+  SweepSettings settings;
+  settings.output = dir.path() / "out";
+  settings.estimator.device = "cpu";
+  settings.version = "test";
+  settings.caseOutputs = {std::make_shared<CaseRenders>(study.renders, settings.estimator)};
+  SweepObserver silent;
+  runSweep(study, settings, silent);
+  const fs::path dark = dir.path() / "out/cases/case-001",
+                 light = dir.path() / "out/cases/case-002";
+  EXPECT_NE(readText(light / "render.json").find(R"x("light": "total (direct + interreflected)")x"),
+            std::string::npos);
+  const ScalarImage e1 = readScalarExr(dark / "corner.E.exr"),
+                    e2 = readScalarExr(light / "corner.E.exr");
+  const FaceIdImage faces = readFaceIdExr(dark / "corner.faceid.exr");
+  int brighter = 0, others = 0;
+  for (int y = 0; y < faces.height; ++y)
+    for (int x = 0; x < faces.width; ++x) {
+      const uint32_t id = faces.at(x, y);
+      if (id <= 6 || e1.at(x, y) <= 0.0f) continue;  // nothing, the floor, or the panel
+      ++others;
+      brighter += e2.at(x, y) > e1.at(x, y);
+    }
+  EXPECT_GT(others, 48 * 32 / 8);
+  EXPECT_EQ(brighter, others);
 }
 
 TEST(SweepRenders, AnUnknownViewIsAnErrorNamingTheScenesViews) {

@@ -40,7 +40,7 @@ SurfacesPlot plotSurfaces(const Scene& scene, IlluminanceEngine& engine, const P
   style.scale = colourScale(options.legend, darkest, surfaceLegendTop(illuminance));
   style.width = options.width;
   style.subtitle = fmt::format(
-      "{} · faces sampled every {} m ({} points) · L = ρ·E/π in "
+      "{} · faces sampled every {} m ({} points) · direct light only · L = ρ·E/π in "
       "surfaces.vtp",
       sceneName, result.spacing, result.points);
   result.width = style.width;

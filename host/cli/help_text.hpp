@@ -163,11 +163,14 @@ inline constexpr const char* kLuminaireFooter =
 
 inline constexpr const char* kRender =
     "Render the scene's views: luminance images (cd/m²) with exact direct illuminance at every "
-    "visible point, soft shadows included, plus illuminance and face-id images.";
+    "visible point, soft shadows included, and the light the room's surfaces reflect (unless "
+    "--direct-only), plus illuminance and face-id images.";
 
 inline constexpr const char* kRenderFooter =
     "Outputs (in the directory given with -o), per view:\n"
-    "  <view>.exr         luminance L = reflectance * E / pi per RGB channel, cd/m², 32-bit\n"
+    "  <view>.exr         luminance L = reflectance * E / pi per RGB channel, E the total\n"
+    "                     (direct + interreflected) or with --direct-only the direct, cd/m², "
+    "32-bit\n"
     "                     float linear RGB; a visible source shows its own luminance\n"
     "  <view>.hdr         the same as Radiance RGBE radiance, W/(sr m²) = cd/m² / 179, with\n"
     "                     the camera as VIEW= (pvalue, falsecolor, evalglare; about 1 %)\n"
@@ -180,7 +183,9 @@ inline constexpr const char* kRenderFooter =
     "  <view>.tonemap.json  the tone map's statistics (variables, rows, iterations, seconds)\n"
     "  render.json        scene, parameters, device, options, and per view its camera, the\n"
     "                     share of samples computed exactly, and the time of each stage (s)\n"
-    "Each image's header records the view, the scene, its parameters and the units.\n"
+    "Each image's header records the view, the scene, its parameters, the units, the light\n"
+    "(penumbra:light: total (direct + interreflected) or direct only) and the luminaires'\n"
+    "maintenance factors.\n"
     "\n"
     "Views are declared in the scene (docs/scene-format.md, \"Views\"):\n"
     "  views: [{name: from-door, eye: [0.6, 3.6, 1.6], target: [3, 0, 1.2], fov: 75,\n"
@@ -190,7 +195,9 @@ inline constexpr const char* kRenderFooter =
     "Speed: --interval k computes E exactly every k pixels along each row and interpolates\n"
     "between, except across a change of face or of any source's shadow class (lit, penumbra,\n"
     "umbra), where every pixel is exact. k = 1 (the default) is exact everywhere; 4 to 8 is\n"
-    "usually indistinguishable (render.json reports the share computed exactly).\n"
+    "usually indistinguishable (render.json reports the share computed exactly). The\n"
+    "interreflected light is gathered exactly every 8 pixels, at every pixel next to a face\n"
+    "edge and wherever it bends, and interpolated within a face between (docs/render.md).\n"
     "--spp 4 (9, 16) averages 2 x 2 (3 x 3, 4 x 4) samples per pixel for smooth edges.\n"
     "\n"
     "Examples:\n"

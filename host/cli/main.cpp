@@ -110,7 +110,7 @@ int main(int argc, char** argv) {
     return penumbra::viz::runPlotCommand(gridPlot);
   }
   if (*renderCommand) {
-    render.culling = !renderNoCulling;
+    render.estimator.culling = !renderNoCulling;
     render.parameters = penumbra::cli::parameterAssignments(renderSettings);
     return penumbra::runRenderCommand(render);
   }

@@ -24,22 +24,18 @@ inline const CLI::Validator kParameterAssignment(
     },
     "NAME=VALUE");
 
-// --device, --reference, --reference-n, --direct-only, --element-size: how `grid` and `sweep`
-// compute E.
-inline void addEstimatorOptions(CLI::App& command, EstimatorOptions& options) {
+// --device: the OpenCL device a command computes on.
+inline void addDeviceOption(CLI::App& command, std::string& device) {
   command
-      .add_option("--device", options.device,
+      .add_option("--device", device,
                   "OpenCL device: auto (first GPU, else CPU), cpu, gpu, or an index from "
                   "`penumbra devices`")
       ->capture_default_str();
-  command.add_flag("--reference", options.reference,
-                   "Use the host reference estimator instead of the OpenCL kernel (direct light "
-                   "only)");
-  command
-      .add_option("--reference-n", options.referenceN,
-                  "Reference: about N*N sample points per source face")
-      ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+}
+
+// --direct-only, --element-size: whether E and the images include the interreflected light,
+// and on which mesh (`grid`, `sweep` and `render`).
+inline void addInterreflectionOptions(CLI::App& command, EstimatorOptions& options) {
   command.add_flag("!--direct-only", options.interreflection,
                    "Direct light only: leave out the light the room's surfaces reflect (E is then "
                    "the direct illuminance, as without interreflection)");
@@ -49,6 +45,21 @@ inline void addEstimatorOptions(CLI::App& command, EstimatorOptions& options) {
                   "exact and slower (docs/method.md, \"Interreflection\")")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+}
+
+// --device, --reference, --reference-n, --direct-only, --element-size: how `grid` and `sweep`
+// compute E.
+inline void addEstimatorOptions(CLI::App& command, EstimatorOptions& options) {
+  addDeviceOption(command, options.device);
+  command.add_flag("--reference", options.reference,
+                   "Use the host reference estimator instead of the OpenCL kernel (direct light "
+                   "only)");
+  command
+      .add_option("--reference-n", options.referenceN,
+                  "Reference: about N*N sample points per source face")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  addInterreflectionOptions(command, options);
 }
 
 inline ParameterValues parameterAssignments(const std::vector<std::string>& texts) {

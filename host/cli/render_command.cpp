@@ -10,7 +10,9 @@
 #include "cli/render_progress.hpp"
 #include "cli/scene_warnings.hpp"
 #include "cli/version.hpp"
+#include "grid/scene_grids.hpp"
 #include "output/render_files.hpp"
+#include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -51,7 +53,8 @@ int run(const RenderCommandOptions& options) {
   if (!options.quiet) printSceneWarnings(scene);
   const std::vector<const View*> views = selectViews(scene, options);
 
-  compute::Device device = compute::Device::select(options.device);
+  const EstimatorOptions& estimator = options.estimator;
+  compute::Device device = compute::Device::select(estimator.device);
   const compute::DeviceInfo& info = device.info();
   RenderReport report;
   report.version = kVersion;
@@ -64,7 +67,11 @@ int run(const RenderCommandOptions& options) {
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
   }
-  Renderer renderer(device, scene, EngineOptions{options.culling});
+  Renderer renderer(device, scene, EngineOptions{estimator.culling},
+                    estimator.interreflection ? std::optional(estimator.mesh) : std::nullopt);
+  if (const InterreflectionReport* solved = renderer.interreflection())
+    report.interreflection = *solved;
+  report.luminaires = luminaireReports(scene);
   for (const View* view : views) {
     RenderProgress progress(!options.quiet, view->name, view->height);
     RenderOptions renderOptions{options.interval, options.spp,
@@ -91,10 +98,14 @@ int run(const RenderCommandOptions& options) {
       const RenderStats& s = r.stats;
       fmt::print(
           "{:<16} {} × {} px, {} sample(s)/px, exact {:.1f} % of surface samples, "
-          "visibility {:.2f} s, illuminance {:.2f} s, shading {:.2f} s\n",
+          "visibility {:.2f} s, illuminance {:.2f} s, shading {:.2f} s{}\n",
           r.view.name, r.view.width, r.view.height, options.spp, 100.0 * s.exactShare(),
-          s.visibilitySeconds, s.illuminanceSeconds, s.shadingSeconds);
+          s.visibilitySeconds, s.illuminanceSeconds, s.shadingSeconds,
+          report.interreflection ? fmt::format(", interreflection {:.2f} s ({} samples gathered)",
+                                               s.indirectSeconds, s.gatheredSamples)
+                                 : std::string());
     }
+    fmt::print("light: {}\n", illuminanceMeaning(report.interreflection.has_value()));
     fmt::print("renders in {}\n", normalizedTarget(options.output).string());
   }
   return 0;

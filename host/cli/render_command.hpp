@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "cl/device.hpp"
+#include "illuminance/estimator.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
 #include "scene/scene.hpp"
@@ -19,8 +20,9 @@ struct RenderCommandOptions {
   std::vector<std::string> views;  // only these; all when empty
   int interval = 1;                // exact every k pixels along a row
   int spp = 1;                     // samples per pixel (a square)
-  std::string device = "auto";
-  bool culling = true;
+  // The device, culling, and whether the images include the interreflected light (and on
+  // which mesh); the reference options do not apply to renders.
+  EstimatorOptions estimator;
   ParameterValues parameters;
   ToneMapOptions display;  // how <view>.png is made from the HDR image
   int isobands = 0;        // > 0: also <view>.svg and <view>.isobands.png, by `vectorDrawing`

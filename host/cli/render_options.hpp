@@ -48,11 +48,8 @@ inline CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options,
                    "Samples per pixel for anti-aliased edges: 1, 4 (2 x 2), 9 (3 x 3), ...")
       ->capture_default_str()
       ->check(kSquareSampleCount);
-  command
-      ->add_option("--device", options.device,
-                   "OpenCL device: auto (first GPU, else CPU), cpu, gpu, or an index from "
-                   "`penumbra devices`")
-      ->capture_default_str();
+  addDeviceOption(*command, options.estimator.device);
+  addInterreflectionOptions(*command, options.estimator);
   command->add_flag(
       "--no-culling", noCulling,
       "Test every occluder at every pixel (no shadow volumes): slower, the same image");

@@ -114,7 +114,7 @@ int runSweepCommand(const SweepOptions& options) {
     // Renders need no display: host/ writes them, on the device the grids use.
     if (!study.renders.empty() && !options.estimator.reference) {
       settings.caseOutputs.push_back(
-          std::make_shared<CaseRenders>(study.renders, options.estimator.device));
+          std::make_shared<CaseRenders>(study.renders, options.estimator));
     }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);

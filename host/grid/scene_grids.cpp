@@ -23,13 +23,19 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
   for (const SceneWarning& warning : scene.warnings) {
     report.warnings.push_back(warningText(scene.file, warning));
   }
-  for (const Luminaire& l : scene.luminaires) {
-    report.luminaires.push_back(
-        LuminaireReport{l.name, l.file.string(), photometry::formatName(l.format),
-                        static_cast<int>(l.instances.size()), l.lampLumens, l.zonalFluxLm(),
-                        l.maintenanceFactor, luminaireModelName(l.model)});
-  }
+  report.luminaires = luminaireReports(scene);
   return report;
+}
+
+std::vector<LuminaireReport> luminaireReports(const Scene& scene) {
+  std::vector<LuminaireReport> reports;
+  for (const Luminaire& l : scene.luminaires) {
+    reports.push_back(LuminaireReport{l.name, l.file.string(), photometry::formatName(l.format),
+                                      static_cast<int>(l.instances.size()), l.lampLumens,
+                                      l.zonalFluxLm(), l.maintenanceFactor,
+                                      luminaireModelName(l.model)});
+  }
+  return reports;
 }
 
 std::vector<const CalculationGrid*> selectGrids(const Scene& scene,

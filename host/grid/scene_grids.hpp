@@ -17,6 +17,8 @@ namespace penumbra {
 // of `penumbra sweep` start from it and add their grids and times.
 RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
                     const Estimator& estimator, const std::string& version);
+// The scene's photometric luminaires as the reports list them (flux, maintenance factor).
+std::vector<LuminaireReport> luminaireReports(const Scene& scene);
 
 // Told about each grid as it is computed (the progress line); every method does nothing by
 // default.

@@ -21,19 +21,31 @@ nlohmann::json vec3Json(const Vec3& v) {
   return nlohmann::json::array({v.x(), v.y(), v.z()});
 }
 
+// "name=0.8, other=1": the factor each photometric luminaire's flux is scaled by.
+std::string maintenanceFactors(const std::vector<LuminaireReport>& luminaires) {
+  std::string text;
+  for (const LuminaireReport& l : luminaires)
+    text += fmt::format("{}{}={}", text.empty() ? "" : ", ", l.name, l.maintenanceFactor);
+  return text;
+}
+
 // What every image of a view carries in its header.
 ImageMetadata viewMetadata(const RenderReport& report, const View& view, const std::string& units) {
-  return {{"penumbra:version", report.version},
-          {"penumbra:scene", report.sceneFile.string()},
-          {"penumbra:parameters", describeParameters(report.parameters)},
-          {"penumbra:view", view.name},
-          {"penumbra:eye_m", vec3Text(view.eye)},
-          {"penumbra:target_m", vec3Text(view.target)},
-          {"penumbra:up", vec3Text(view.up)},
-          {"penumbra:fov_deg", fmt::format("{}", view.fovDegrees)},
-          {"penumbra:interval", std::to_string(report.interval)},
-          {"penumbra:spp", std::to_string(report.spp)},
-          {"penumbra:units", units}};
+  ImageMetadata metadata{{"penumbra:version", report.version},
+                         {"penumbra:scene", report.sceneFile.string()},
+                         {"penumbra:parameters", describeParameters(report.parameters)},
+                         {"penumbra:view", view.name},
+                         {"penumbra:eye_m", vec3Text(view.eye)},
+                         {"penumbra:target_m", vec3Text(view.target)},
+                         {"penumbra:up", vec3Text(view.up)},
+                         {"penumbra:fov_deg", fmt::format("{}", view.fovDegrees)},
+                         {"penumbra:interval", std::to_string(report.interval)},
+                         {"penumbra:spp", std::to_string(report.spp)},
+                         {"penumbra:light", illuminanceMeaning(report.interreflection.has_value())},
+                         {"penumbra:units", units}};
+  if (!report.luminaires.empty())
+    metadata.push_back({"penumbra:maintenance_factor", maintenanceFactors(report.luminaires)});
+  return metadata;
 }
 
 // Radiance's convention (radiance_hdr.hpp): its tools multiply by 179 to give cd/m².
@@ -70,14 +82,16 @@ nlohmann::json renderJson(const RenderReport& report) {
         {"surface_samples", s.surfaceSamples},
         {"exact_samples", s.exactSamples},
         {"exact_share", s.exactShare()},
+        {"gathered_samples", s.gatheredSamples},
         {"object_tests_per_sample", s.objectTestsPerSample},
         {"timing",
          {{"visibility_s", s.visibilitySeconds},
           {"illuminance_s", s.illuminanceSeconds},
-          {"shading_s", s.shadingSeconds}}},
+          {"shading_s", s.shadingSeconds},
+          {"indirect_s", s.indirectSeconds}}},
     });
   }
-  return {
+  nlohmann::json json = {
       {"penumbra_version", report.version},
       {"scene", report.sceneFile.string()},
       {"parameters", parameterJson(report.parameters)},
@@ -85,10 +99,15 @@ nlohmann::json renderJson(const RenderReport& report) {
       {"interval", report.interval},
       {"spp", report.spp},
       {"display", report.display},
+      {"light", illuminanceMeaning(report.interreflection.has_value())},
       {"units", {{"luminance", "cd/m2"}, {"illuminance", "lx"}}},
       {"total_s", report.totalSeconds},
       {"views", views},
   };
+  if (report.interreflection)
+    json["interreflection"] = interreflectionJson(*report.interreflection);
+  if (!report.luminaires.empty()) json["luminaires"] = luminairesJson(report.luminaires);
+  return json;
 }
 
 std::vector<std::string> writeRenderFiles(const RenderReport& report,

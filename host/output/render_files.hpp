@@ -6,14 +6,18 @@
 //   <view>.faceid.exr   which face each pixel shows, channel "id" (render/visible_scene.hpp)
 //   <view>.png          the display image (host/tonemap), <view>.tonemap.json its statistics
 // and render.json: scene, parameters, device, options and per view its camera and statistics.
-// The view, scene and units are also written into each image's header ("penumbra:*").
+// The view, scene and units, what light the images include ("penumbra:light": "total (direct +
+// interreflected)" or "direct only") and the luminaires' maintenance factors are also written
+// into each image's header ("penumbra:*").
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "grid/run_report.hpp"
 #include "image/images.hpp"
 #include "render/renderer.hpp"
 #include "scene/parameters.hpp"
@@ -28,6 +32,9 @@ struct RenderReport {
   std::string device;
   int interval = 1, spp = 1;
   std::string display;  // how the PNG was made
+  // The interreflection solver's report; empty when the images show direct light only.
+  std::optional<InterreflectionReport> interreflection;
+  std::vector<LuminaireReport> luminaires;  // the scene's photometric luminaires
   struct ViewFiles {
     RenderedView rendered;
     DisplayImage display;

@@ -138,8 +138,44 @@ void writeGridRes(std::ostream& out, const GridReport& grid) {
   out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
 }
 
+std::string illuminanceMeaning(bool interreflection) {
+  return interreflection ? "total (direct + interreflected)" : "direct only";
+}
+
 std::string illuminanceMeaning(const RunReport& report) {
-  return report.interreflection ? "total (direct + interreflected)" : "direct only";
+  return illuminanceMeaning(report.interreflection.has_value());
+}
+
+nlohmann::json interreflectionJson(const InterreflectionReport& r) {
+  nlohmann::json black = nlohmann::json::array();
+  for (const std::string& name : r.blackSolids) black.push_back(name);
+  return {
+      {"elements", r.elements},
+      {"element_size_m", r.elementSize},
+      {"quadrature_nodes", r.nodes},
+      {"surface_area_m2", r.surfaceArea},
+      {"relative_residual", r.residual},
+      {"transfer_reused", r.transferReused},
+      {"refinement_capped", r.refinementCapped},
+      {"solids_without_material", black},
+      {"timing",
+       {{"mesh_s", r.meshSeconds}, {"transfer_s", r.transferSeconds}, {"solve_s", r.solveSeconds}}},
+  };
+}
+
+nlohmann::json luminairesJson(const std::vector<LuminaireReport>& reports) {
+  nlohmann::json luminaires = nlohmann::json::array();
+  for (const LuminaireReport& l : reports) {
+    luminaires.push_back({{"name", l.name},
+                          {"file", l.file},
+                          {"format", l.format},
+                          {"instances", l.instances},
+                          {"lamp_lumens_lm", number(l.lampLumens)},
+                          {"zonal_flux_lm", number(l.zonalFluxLm)},
+                          {"maintenance_factor", number(l.maintenanceFactor)},
+                          {"model", l.model}});
+  }
+  return luminaires;
 }
 
 nlohmann::json summaryJson(const RunReport& report) {
@@ -197,39 +233,9 @@ nlohmann::json summaryJson(const RunReport& report) {
   };
   if (report.estimator == "reference") summary["reference_n"] = report.referenceN;
   summary["illuminance"] = illuminanceMeaning(report);
-  if (report.interreflection) {
-    const InterreflectionReport& r = *report.interreflection;
-    nlohmann::json black = nlohmann::json::array();
-    for (const std::string& name : r.blackSolids) black.push_back(name);
-    summary["interreflection"] = {
-        {"elements", r.elements},
-        {"element_size_m", r.elementSize},
-        {"quadrature_nodes", r.nodes},
-        {"surface_area_m2", r.surfaceArea},
-        {"relative_residual", r.residual},
-        {"transfer_reused", r.transferReused},
-        {"refinement_capped", r.refinementCapped},
-        {"solids_without_material", black},
-        {"timing",
-         {{"mesh_s", r.meshSeconds},
-          {"transfer_s", r.transferSeconds},
-          {"solve_s", r.solveSeconds}}},
-    };
-  }
-  if (!report.luminaires.empty()) {
-    nlohmann::json luminaires = nlohmann::json::array();
-    for (const LuminaireReport& l : report.luminaires) {
-      luminaires.push_back({{"name", l.name},
-                            {"file", l.file},
-                            {"format", l.format},
-                            {"instances", l.instances},
-                            {"lamp_lumens_lm", number(l.lampLumens)},
-                            {"zonal_flux_lm", number(l.zonalFluxLm)},
-                            {"maintenance_factor", number(l.maintenanceFactor)},
-                            {"model", l.model}});
-    }
-    summary["luminaires"] = luminaires;
-  }
+  if (report.interreflection)
+    summary["interreflection"] = interreflectionJson(*report.interreflection);
+  if (!report.luminaires.empty()) summary["luminaires"] = luminairesJson(report.luminaires);
   return summary;
 }
 

@@ -42,6 +42,11 @@ void writeGridRes(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
 // What E includes, in words: "total (direct + interreflected)" or "direct only".
 std::string illuminanceMeaning(const RunReport& report);
+std::string illuminanceMeaning(bool interreflection);
+// The interreflection solver's report and the photometric luminaires, as summary.json and
+// render.json give them.
+nlohmann::json interreflectionJson(const InterreflectionReport& report);
+nlohmann::json luminairesJson(const std::vector<LuminaireReport>& luminaires);
 
 // Writes summary.json (summaryJson) into `directory`.
 void writeSummaryFile(const RunReport& report, const std::filesystem::path& directory);

@@ -174,10 +174,12 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
 
 Interreflection::~Interreflection() = default;
 
-std::vector<double> Interreflection::indirect(std::span<const SamplePoint> points) {
-  std::vector<double> e(points.size(), 0.0);
+Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
+                                        const Eigen::MatrixXd& luminance) {
+  Eigen::MatrixXd e =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), luminance.cols());
   if (!geometry_) return e;
-  // Each element's E at unit luminance, weighted by its solved luminance; about 2^22 point·element
+  // Each element's E at unit luminance, weighted by its luminance; about 2^22 point·element
   // values (16 MB of float) at a time.
   const std::size_t elements = mesh_.elements.size();
   const std::size_t batch = std::max<std::size_t>(1, (std::size_t{1} << 22) / elements);
@@ -187,12 +189,30 @@ std::vector<double> Interreflection::indirect(std::span<const SamplePoint> point
     const std::vector<float> unit =
         geometry_->gather->illuminanceBySource(points.subspan(first, count), stride);
     for (std::size_t j = 0; j < elements; ++j) {
-      const double l = luminance_[static_cast<Eigen::Index>(j)];
       const float* row = unit.data() + j * stride;
-      for (std::size_t p = 0; p < count; ++p) e[first + p] += l * row[p];
+      for (Eigen::Index c = 0; c < luminance.cols(); ++c) {
+        const double l = luminance(static_cast<Eigen::Index>(j), c);
+        if (l == 0.0) continue;
+        for (std::size_t p = 0; p < count; ++p)
+          e(static_cast<Eigen::Index>(first + p), c) += l * row[p];
+      }
     }
   }
   return e;
+}
+
+std::vector<double> Interreflection::indirect(std::span<const SamplePoint> points) {
+  const Eigen::MatrixXd e = gather(points, luminance_);
+  return std::vector<double>(e.data(), e.data() + e.size());
+}
+
+std::vector<Eigen::Vector3d> Interreflection::indirectChannels(
+    std::span<const SamplePoint> points) {
+  const Eigen::MatrixXd e = gather(points, solution_.luminance);
+  std::vector<Eigen::Vector3d> channels(points.size());
+  for (std::size_t p = 0; p < points.size(); ++p)
+    channels[p] = e.row(static_cast<Eigen::Index>(p)).transpose();
+  return channels;
 }
 
 }  // namespace penumbra

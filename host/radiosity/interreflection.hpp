@@ -47,6 +47,10 @@ class Interreflection {
 
   // Interreflected E in lx at each point (the photometric sum of the channels).
   std::vector<double> indirect(std::span<const SamplePoint> points);
+  // Interreflected E per RGB channel at each point (lx; L = ρ_c·E_c/π as for a source's
+  // colour), from the same gather: each element's part weighted by its solved luminance in that
+  // channel. The photometric sum of the channels is indirect() to double rounding.
+  std::vector<Eigen::Vector3d> indirectChannels(std::span<const SamplePoint> points);
 
   const SurfaceMesh& mesh() const { return mesh_; }
   const RadiositySolution& solution() const { return solution_; }
@@ -55,6 +59,10 @@ class Interreflection {
   const InterreflectionReport& report() const { return report_; }
 
  private:
+  // Σ_j E_j(P)·luminance(j, c) at every point P for every column c, E_j the kernel's E from
+  // element j at 1 cd/m²: points × columns, lx.
+  Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
+
   SurfaceMesh mesh_;
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "render/camera.hpp"
+#include "render/indirect_sampling.hpp"
 #include "render/interval_sampling.hpp"
 #include "render/visibility_engine.hpp"
 #include "timing/seconds_since.hpp"
@@ -36,17 +37,24 @@ Vec3 luminanceColour(const Vec3& colour) {
 struct Renderer::State {
   compute::Device* device;
   const Scene* scene;
+  EngineOptions engine;
   IlluminanceEngine illuminance;
   VisibilityEngine visibility;
-  std::vector<Vec3> sourceColours;  // luminanceColour per source
+  std::optional<MeshOptions> mesh;                   // set: with interreflection
+  std::unique_ptr<Interreflection> interreflection;  // solved for `scene` when `mesh` is set
+  std::vector<Vec3> sourceColours;                   // luminanceColour per source
   std::vector<Vec3> solidReflectance;
 
-  State(compute::Device& d, const Scene& s, EngineOptions engine)
-      : device(&d), scene(&s), illuminance(d, s, engine), visibility(d, s) {
+  State(compute::Device& d, const Scene& s, EngineOptions e, std::optional<MeshOptions> m)
+      : device(&d), scene(&s), engine(e), illuminance(d, s, e), visibility(d, s), mesh(m) {
     prepare();
   }
 
   void prepare() {
+    interreflection.reset();
+    if (mesh)
+      interreflection =
+          std::make_unique<Interreflection>(*device, *scene, illuminance, *mesh, engine);
     sourceColours.clear();
     for (const Source& source : scene->sources)
       sourceColours.push_back(luminanceColour(source.color));
@@ -114,7 +122,49 @@ struct Renderer::State {
     }
   }
 
-  SampleLayer renderSamples(const Camera& camera, int interval, RenderStats& stats,
+  // Gathers the interreflected light per channel at `samples` into `indirect` (3 per sample).
+  void gatherIndirect(const Camera& camera, const SampleLayer& layer,
+                      const std::vector<std::size_t>& samples, std::vector<float>& indirect,
+                      const std::function<void(std::size_t)>& done) {
+    std::vector<SamplePoint> points;
+    for (std::size_t start = 0; start < samples.size(); start += kBatch) {
+      const std::size_t end = std::min(samples.size(), start + kBatch);
+      points.clear();
+      for (std::size_t j = start; j < end; ++j)
+        points.push_back(surfacePoint(camera, layer.visibility, samples[j]));
+      const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
+      for (std::size_t j = start; j < end; ++j)
+        for (int c = 0; c < 3; ++c)
+          indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
+      done(end - start);
+    }
+  }
+
+  // Adds the interreflected light to the layer's surface samples (its direct light complete):
+  // gathered exactly where the lattice plan asks, interpolated within a face between.
+  void addIndirect(const Camera& camera, SampleLayer& layer, LatticePlan& plan,
+                   const std::function<void(std::size_t)>& done) {
+    const std::size_t n = layer.visibility.faceIds.size();
+    std::vector<float> indirect(n * 3, 0.0f);  // lx per channel
+    gatherIndirect(camera, layer, plan.exact(), indirect, done);
+    for (std::vector<std::size_t> round = plan.next(indirect, layer.illuminance); !round.empty();
+         round = plan.next(indirect, layer.illuminance))
+      gatherIndirect(camera, layer, round, indirect, done);
+    plan.interpolate(indirect, 3);
+    for (std::size_t i = 0; i < n; ++i) {
+      const uint32_t id = layer.visibility.faceIds[i];
+      if (id == FaceIdImage::kNoSurface) continue;
+      const VisibleFace& face = visibility.visible().face(id);
+      if (face.isSource) continue;
+      const Vec3 e(indirect[i * 3], indirect[i * 3 + 1], indirect[i * 3 + 2]);
+      const Vec3 l = solidReflectance[face.index].cwiseProduct(e) / std::numbers::pi;
+      layer.illuminance[i] += static_cast<float>(photometric(e));
+      for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
+    }
+  }
+
+  SampleLayer renderSamples(const Camera& camera, int interval, int indirectSpacing,
+                            RenderStats& stats,
                             const std::function<void(std::size_t, std::size_t)>& progress) {
     SampleLayer layer;
     auto start = Clock::now();
@@ -144,6 +194,13 @@ struct Renderer::State {
     stats.samples += n;
     stats.surfaceSamples += surface;
     IntervalPlan plan(camera.width, camera.height, layer.visibility.faceIds, needed, interval);
+    std::optional<LatticePlan> lattice;
+    if (interreflection)
+      lattice.emplace(camera.width, camera.height, layer.visibility.faceIds, needed,
+                      indirectSpacing);
+    // The indirect rounds after the first are unknown until it is done: progress counts what
+    // is known.
+    std::size_t work = surface + (lattice ? lattice->exact().size() : 0);
     stats.shadingSeconds += secondsSince(start);
 
     start = Clock::now();
@@ -153,7 +210,7 @@ struct Renderer::State {
     // Later rounds are unknown until the earlier ones are done: progress counts what is known.
     const auto advance = [&](std::size_t count) {
       done += count;
-      if (progress) progress(std::min(done, surface), surface);
+      if (progress) progress(std::min(done, work), work);
     };
     const std::vector<std::size_t>& first = plan.firstPass();
     evaluate(camera, layer, first, classes, advance);
@@ -165,14 +222,29 @@ struct Renderer::State {
     plan.interpolate(layer.illuminance, 1);
     plan.interpolate(layer.rgb, 3);
     stats.illuminanceSeconds += secondsSince(start);
-    if (progress) progress(surface, surface);
+    if (lattice) {
+      start = Clock::now();
+      const auto counted = [&](std::size_t count) {
+        if (done >= work) work += count;
+        advance(count);
+      };
+      addIndirect(camera, layer, *lattice, counted);
+      stats.gatheredSamples += lattice->gathered();
+      stats.indirectSeconds += secondsSince(start);
+    }
+    if (progress) progress(work, work);
     return layer;
   }
 };
 
-Renderer::Renderer(compute::Device& device, const Scene& scene, EngineOptions engine)
-    : state_(std::make_unique<State>(device, scene, engine)) {}
+Renderer::Renderer(compute::Device& device, const Scene& scene, EngineOptions engine,
+                   std::optional<MeshOptions> interreflection)
+    : state_(std::make_unique<State>(device, scene, engine, interreflection)) {}
 Renderer::~Renderer() = default;
+
+const InterreflectionReport* Renderer::interreflection() const {
+  return state_->interreflection ? &state_->interreflection->report() : nullptr;
+}
 
 void Renderer::setScene(const Scene& scene) {
   state_->scene = &scene;
@@ -217,8 +289,8 @@ RenderedView Renderer::render(const View& view, const RenderOptions& options) {
     };
   };
   const Camera centreCamera = Camera::forView(view, 1);
-  const SampleLayer centre =
-      state_->renderSamples(centreCamera, options.interval, out.stats, report(0.0, centreShare));
+  const SampleLayer centre = state_->renderSamples(
+      centreCamera, options.interval, options.indirectSpacing, out.stats, report(0.0, centreShare));
   const auto start = Clock::now();
   out.illuminance = ScalarImage(view.width, view.height);
   out.illuminance.values = centre.illuminance;
@@ -231,7 +303,8 @@ RenderedView Renderer::render(const View& view, const RenderOptions& options) {
     return out;
   }
   const SampleLayer fine = state_->renderSamples(Camera::forView(view, side), options.interval,
-                                                 out.stats, report(centreShare, 1.0 - centreShare));
+                                                 options.indirectSpacing * side, out.stats,
+                                                 report(centreShare, 1.0 - centreShare));
   const auto filterStart = Clock::now();
   const int fineWidth = view.width * side;
   for (int y = 0; y < view.height; ++y)

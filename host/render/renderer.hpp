@@ -2,7 +2,9 @@
 // A view of the scene as a luminance image (cd/m² per RGB channel) with its illuminance and
 // face-id AOVs: primary visibility (visibility_engine), exact illuminance at the visible points
 // through the same IlluminanceEngine as the grids (no second implementation of the integral),
-// interval sampling along rows, L = ρ·E/π, optional supersampling.
+// interval sampling along rows, the interreflected light gathered on a lattice of samples
+// (indirect_sampling.hpp) when it is asked for, L = ρ·(E_direct + E_indirect)/π per channel,
+// optional supersampling.
 #include <functional>
 #include <memory>
 #include <optional>
@@ -11,6 +13,7 @@
 #include "cl/device.hpp"
 #include "engine/illuminance_engine.hpp"
 #include "image/images.hpp"
+#include "radiosity/interreflection.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -20,6 +23,10 @@ struct RenderOptions {
   int spp = 1;       // samples per pixel, a square (1, 4, 9, 16, ...)
   // Called after each batch with the fraction done, in [0, 1].
   std::function<void(double)> progress;
+  // With interreflection: the interreflected light is gathered exactly every `indirectSpacing`
+  // samples in x and y and at every sample next to a face edge, interpolated within a face
+  // between (1: gathered at every sample). Supersampled layers scale it by their side.
+  int indirectSpacing = 8;
 };
 
 struct RenderStats {
@@ -27,7 +34,9 @@ struct RenderStats {
   std::size_t surfaceSamples = 0;  // samples that show a solid (and need illuminance)
   std::size_t exactSamples = 0;    // of those, computed exactly
   double objectTestsPerSample = 0.0;
+  std::size_t gatheredSamples = 0;  // of the surface samples, interreflection gathered exactly
   double visibilitySeconds = 0.0, illuminanceSeconds = 0.0, shadingSeconds = 0.0;
+  double indirectSeconds = 0.0;  // the interreflected light's gather and interpolation
   // Mpixel·sources/s over the illuminance part: surface samples × sources / time.
   double exactShare() const {
     return surfaceSamples ? static_cast<double>(exactSamples) / surfaceSamples : 1.0;
@@ -36,9 +45,11 @@ struct RenderStats {
 
 struct RenderedView {
   View view;
-  RgbImage luminance;       // cd/m², linear RGB
-  ScalarImage illuminance;  // lx at each pixel centre's visible point; 0 on sources and sky
-  FaceIdImage faces;        // at each pixel centre (render/visible_scene.hpp numbers the faces)
+  RgbImage luminance;  // cd/m², linear RGB
+  // lx at each pixel centre's visible point, the total (direct + interreflected) when the
+  // renderer computes interreflection; 0 on sources and sky
+  ScalarImage illuminance;
+  FaceIdImage faces;  // at each pixel centre (render/visible_scene.hpp numbers the faces)
   RenderStats stats;
 };
 
@@ -48,9 +59,14 @@ Vec3 luminanceColour(const Vec3& colour);
 
 class Renderer {
  public:
-  Renderer(compute::Device& device, const Scene& scene, EngineOptions engine = {});
+  // With `interreflection`, the scene's interreflection is solved on that mesh (and again at
+  // every setScene) and the images show the total light; without, the direct light only.
+  Renderer(compute::Device& device, const Scene& scene, EngineOptions engine = {},
+           std::optional<MeshOptions> interreflection = std::nullopt);
   ~Renderer();
   void setScene(const Scene& scene);
+  // The interreflection's solver report; null when the renderer shows direct light only.
+  const InterreflectionReport* interreflection() const;
 
   // Throws std::invalid_argument for an interval below 1 or an spp that is not a square.
   RenderedView render(const View& view, const RenderOptions& options);

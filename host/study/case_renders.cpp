@@ -11,8 +11,9 @@
 
 namespace penumbra {
 
-CaseRenders::CaseRenders(std::vector<std::string> views, std::string device, ToneMapOptions display)
-    : views_(std::move(views)), deviceSpec_(std::move(device)), display_(display) {}
+CaseRenders::CaseRenders(std::vector<std::string> views, EstimatorOptions estimator,
+                         ToneMapOptions display)
+    : views_(std::move(views)), estimator_(std::move(estimator)), display_(display) {}
 CaseRenders::~CaseRenders() = default;
 
 std::string CaseRenders::name() const {
@@ -21,12 +22,15 @@ std::string CaseRenders::name() const {
 
 std::vector<std::string> CaseRenders::write(const Scene& scene, const RunReport& report,
                                             const std::filesystem::path& directory) {
-  if (!device_) device_ = std::make_unique<compute::Device>(compute::Device::select(deviceSpec_));
+  if (!device_)
+    device_ = std::make_unique<compute::Device>(compute::Device::select(estimator_.device));
   // The program is built once per sweep; each case's scene replaces the previous one.
   if (renderer_) {
     renderer_->setScene(scene);
   } else {
-    renderer_ = std::make_unique<Renderer>(*device_, scene);
+    renderer_ = std::make_unique<Renderer>(
+        *device_, scene, EngineOptions{estimator_.culling},
+        estimator_.interreflection ? std::optional(estimator_.mesh) : std::nullopt);
   }
   RenderReport renders;
   renders.version = report.version;
@@ -34,6 +38,9 @@ std::vector<std::string> CaseRenders::write(const Scene& scene, const RunReport&
   renders.parameters = report.parameters;
   renders.device = report.device;
   renders.display = displayMethodName(display_.method);
+  if (const InterreflectionReport* solved = renderer_->interreflection())
+    renders.interreflection = *solved;
+  renders.luminaires = report.luminaires;
   for (const std::string& name : views_) {
     const auto view = std::find_if(scene.views.begin(), scene.views.end(),
                                    [&](const View& v) { return v.name == name; });

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cl/device.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/case_output.hpp"
 #include "render/renderer.hpp"
 #include "tonemap/tone_map_options.hpp"
@@ -15,8 +16,10 @@ namespace penumbra {
 
 class CaseRenders : public CaseOutputWriter {
  public:
-  // `device` as --device takes it; the device is opened at the first case and kept.
-  CaseRenders(std::vector<std::string> views, std::string device, ToneMapOptions display = {});
+  // The device as --device takes it (opened at the first case and kept), culling, and whether
+  // the images include the interreflected light, on which mesh, as the sweep's grids do.
+  CaseRenders(std::vector<std::string> views, EstimatorOptions estimator,
+              ToneMapOptions display = {});
   ~CaseRenders() override;
 
   std::string name() const override;
@@ -26,7 +29,7 @@ class CaseRenders : public CaseOutputWriter {
 
  private:
   std::vector<std::string> views_;
-  std::string deviceSpec_;
+  EstimatorOptions estimator_;
   ToneMapOptions display_;
   std::unique_ptr<compute::Device> device_;
   std::unique_ptr<Renderer> renderer_;
