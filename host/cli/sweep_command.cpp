@@ -126,11 +126,15 @@ int runSweepCommand(const SweepOptions& options) {
     settings.caseOutputs = options.caseOutputs;
 
     const auto start = std::chrono::steady_clock::now();
-    const Study study = loadStudy(options.study);
+    Study study = loadStudy(options.study);
+    study.renderExposure = options.exposure;
+    if (!options.exposure.empty() && study.renders.empty()) {
+      throw std::invalid_argument("--exposure: the study renders nothing (it has no `renders:`)");
+    }
     // Renders need no display: host/ writes them, on the device the grids use.
     if (!study.renders.empty() && !options.estimator.reference) {
-      settings.caseOutputs.push_back(
-          std::make_shared<CaseRenders>(study.renders, options.estimator.device));
+      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(
+          study.renders, options.estimator.device, options.exposure, options.output));
     }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);

@@ -9,14 +9,22 @@
 #include "cl/device.hpp"
 #include "output/case_output.hpp"
 #include "render/renderer.hpp"
+#include "study/render_exposure.hpp"
 #include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
 
+// Where auto-first keeps the white it chose (OUT/exposure.json), so that a rerun or --resume
+// exposes the cases it adds as the first ones were.
+inline constexpr const char* kExposureJson = "exposure.json";
+
 class CaseRenders : public CaseOutputWriter {
  public:
-  // `device` as --device takes it; the device is opened at the first case and kept.
-  CaseRenders(std::vector<std::string> views, std::string device, ToneMapOptions display = {});
+  // `device` as --device takes it; the device is opened at the first case and kept. `exposure`
+  // as `sweep --exposure` takes it (render_exposure.hpp); `output` is the sweep's folder (where
+  // auto-first keeps its white).
+  CaseRenders(std::vector<std::string> views, std::string device, std::string exposure = "",
+              std::filesystem::path output = {});
   ~CaseRenders() override;
 
   std::string name() const override;
@@ -25,8 +33,15 @@ class CaseRenders : public CaseOutputWriter {
                                  const std::filesystem::path& directory) override;
 
  private:
+  // The display of this case's views: the study's white, chosen from `rendered` (the first
+  // view) when auto-first has none yet.
+  ToneMapOptions displayFor(const RenderedView& rendered);
+
   std::vector<std::string> views_;
   std::string deviceSpec_;
+  std::string exposureText_;
+  RenderExposure exposure_;
+  std::filesystem::path output_;
   ToneMapOptions display_;
   std::unique_ptr<compute::Device> device_;
   std::unique_ptr<Renderer> renderer_;
