@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 
 #include <bit>
 #include <cmath>
@@ -79,19 +80,43 @@ std::vector<double> testValues() {
   return values;
 }
 
-TEST(NumberText, ReadsBackToTheSameDoubleAndIsFmtsText) {
+// A double is written as fmt writes it and reads back to itself; a double that holds a float (the
+// kernel's E) is written as fmt writes the float, and reads back to that float.
+TEST(NumberText, ReadsBackToTheSameDoubleOrFloatAndIsFmtsText) {
   NumberTextCache cache;
+  int floats = 0;
   for (const double v : testValues()) {
     const std::string text = written(v);
     ASSERT_LE(text.size(), 24u) << text;
-    ASSERT_EQ(text, fmt::format("{}", v));
+    const bool isFloat = std::isfinite(v) && std::abs(v) <= std::numeric_limits<float>::max() &&
+                         static_cast<double>(static_cast<float>(v)) == v;
+    ASSERT_EQ(text, isFloat ? fmt::format("{}", static_cast<float>(v)) : fmt::format("{}", v));
     ASSERT_EQ(cached(cache, v), text);
-    if (std::isfinite(v)) {
+    if (isFloat) {
+      ++floats;
+      const float back = std::strtof(text.c_str(), nullptr);
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(back), std::bit_cast<std::uint32_t>(float(v))) << text;
+    } else if (std::isfinite(v)) {
       const double back = std::strtod(text.c_str(), nullptr);
       ASSERT_EQ(std::bit_cast<std::uint64_t>(back), std::bit_cast<std::uint64_t>(v)) << text;
     }
   }
+  EXPECT_GT(floats, 100000);
   EXPECT_EQ(written(std::numeric_limits<double>::quiet_NaN()), "nan");
+}
+
+// The digits a value holds: a float's shortest text in CSV and JSON alike, a double's own.
+TEST(NumberText, AFloatHasItsOwnDigitsAndADoubleKeepsItsDigits) {
+  const double kernelE = static_cast<double>(1006.5396f);
+  EXPECT_EQ(fmt::format("{}", kernelE), "1006.5396118164062");  // the float's exact binary value
+  EXPECT_EQ(written(kernelE), "1006.5396");
+  EXPECT_EQ(nlohmann::json(jsonNumber(kernelE)).dump(), "1006.5396");
+  EXPECT_EQ(written(28.765325864156086), "28.765325864156086");  // a mean, computed in double
+  EXPECT_EQ(nlohmann::json(jsonNumber(28.765325864156086)).dump(), "28.765325864156086");
+  EXPECT_EQ(written(2.5500000000000003), "2.5500000000000003");
+  EXPECT_EQ(written(0.25), "0.25");
+  EXPECT_EQ(numberText(1e-5), "1e-05");
+  EXPECT_EQ(jsonNumber(0.1), 0.1);
 }
 
 TEST(NumberText, TheCacheGivesEachValueItsOwnTextWhenValuesShareASlot) {
@@ -113,7 +138,7 @@ TEST(NumberText, TheCacheGivesEachValueItsOwnTextWhenValuesShareASlot) {
 
 TEST(GridRows, RowsAreThoseOfThePlainFmtFormat) {
   GridRows rows;
-  std::string csv, res;
+  std::string csv, res, pts;
   std::mt19937 random(5);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
   const std::vector<std::string> fields = {"", "desk", csvField("a, \"b\""), ""};
@@ -126,9 +151,11 @@ TEST(GridRows, RowsAreThoseOfThePlainFmtFormat) {
     csv += fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), e,
                        field);
     res += fmt::format("{}\n", e);
+    pts += fmt::format("{} {} {} {} {} {}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
   }
   EXPECT_EQ(rows.csv(), csv);
   EXPECT_EQ(rows.res(), res);
+  EXPECT_EQ(rows.pts(), pts);
   rows.clear();
   rows.addIlluminance(1e-30);
   EXPECT_EQ(rows.csv(), "");
@@ -172,7 +199,7 @@ TEST(GridFileWriter, FilesWrittenBatchByBatchAreThoseOfThePlainFmtFormat) {
   files.close();
 
   const GridSamples samples = gridSamples(scene, grid);
-  std::string csv = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n", res;
+  std::string csv = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n", res, pts;
   int insideBox = 0;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const Vec3 p = grid.position(i), n = grid.normal(i);
@@ -182,10 +209,12 @@ TEST(GridFileWriter, FilesWrittenBatchByBatchAreThoseOfThePlainFmtFormat) {
     csv += fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), e,
                        in >= 0 ? csvField(scene.solids[in].name) : "");
     res += fmt::format("{}\n", e);
+    pts += fmt::format("{} {} {} {} {} {}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
   }
   EXPECT_GT(insideBox, 0);
   EXPECT_EQ(readText(dir.path() / "plane.csv"), csv);
   EXPECT_EQ(readText(dir.path() / "plane.res"), res);
+  EXPECT_EQ(readText(dir.path() / "plane.pts"), pts);
 }
 
 TEST(GridEvaluation, ClassifyingAheadKeepsTheBatchesAndTheAnswers) {

@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "output/grid_rows.hpp"
+#include "output/number_text.hpp"
 #include "output/staged_directory.hpp"
 
 namespace penumbra {
@@ -35,7 +36,7 @@ namespace {
 
 // JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
 nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
+  return std::isfinite(value) ? nlohmann::json(jsonNumber(value)) : nlohmann::json(nullptr);
 }
 
 }  // namespace
@@ -100,6 +101,7 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
     }
     names.push_back(stem + ".csv");
     names.push_back(stem + ".res");
+    names.push_back(stem + ".pts");
   }
   names.push_back("summary.json");
   return names;
@@ -124,6 +126,18 @@ void writeGridCsv(std::ostream& out, const GridReport& grid) {
     }
   }
   out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
+}
+
+void writeGridPts(std::ostream& out, const GridReport& grid) {
+  GridRows rows;
+  for (const SamplePoint& point : grid.points) {
+    rows.addPoint(point.position, point.normal);
+    if (rows.pts().size() > (1u << 20)) {
+      out.write(rows.pts().data(), static_cast<std::streamsize>(rows.pts().size()));
+      rows.clear();
+    }
+  }
+  out.write(rows.pts().data(), static_cast<std::streamsize>(rows.pts().size()));
 }
 
 void writeGridRes(std::ostream& out, const GridReport& grid) {
@@ -151,6 +165,7 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"name", grid.name},
         {"csv", stem + ".csv"},
         {"res", stem + ".res"},
+        {"pts", stem + ".pts"},
         {"kind", gridKindName(grid.kind)},
         {"columns",
          grid.kind == GridKind::Points ? nlohmann::json(nullptr) : nlohmann::json(grid.columns)},
@@ -238,6 +253,7 @@ void writeResultFiles(const RunReport& report, const std::filesystem::path& dire
     const std::string stem = gridFileStem(grid.name);
     writeFile(directory / (stem + ".csv"), [&](std::ostream& out) { writeGridCsv(out, grid); });
     writeFile(directory / (stem + ".res"), [&](std::ostream& out) { writeGridRes(out, grid); });
+    writeFile(directory / (stem + ".pts"), [&](std::ostream& out) { writeGridPts(out, grid); });
   }
   writeSummaryFile(report, directory);
 }
