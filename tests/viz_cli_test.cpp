@@ -54,9 +54,10 @@ TEST(PlotCli, GridWithPlotWritesEveryPicture) {
   std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
   const Outcome run = penumbra(dir.path(), "grid room.yaml -o out --plot --width 800 -q");
   ASSERT_EQ(run.status, 0) << run.err;
-  const std::set<std::string> expected{
-      "work-plane.csv", "work-plane.res", "sensors.csv", "sensors.res",  "summary.json",
-      "work-plane.png", "work-plane.vti", "sensors.vtp", "surfaces.vtp", "surfaces.png"};
+  const std::set<std::string> expected{"work-plane.csv", "work-plane.res", "work-plane.pts",
+                                       "sensors.csv",    "sensors.res",    "sensors.pts",
+                                       "summary.json",   "work-plane.png", "work-plane.vti",
+                                       "sensors.vtp",    "surfaces.vtp",   "surfaces.png"};
   EXPECT_EQ(filesIn(dir.path() / "out"), expected);
   const penumbra::testing::Png png(dir.path() / "out" / "work-plane.png");
   EXPECT_EQ(png.width(), 800);

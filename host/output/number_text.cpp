@@ -1,24 +1,9 @@
 #include "output/number_text.hpp"
 
 #include <bit>
-#include <charconv>
 #include <cstring>
 
 namespace penumbra {
-
-std::string numberText(double value) {
-  char text[kMaxNumberText];
-  return {text, writeNumber(text, value)};
-}
-
-double jsonNumber(double value) {
-  if (!holdsFloat(value)) return value;
-  char text[kMaxNumberText];
-  const auto written = std::to_chars(text, text + sizeof text, static_cast<float>(value));
-  double nearest = value;
-  std::from_chars(text, written.ptr, nearest);
-  return nearest;
-}
 
 // Every slot starts as 0.0, whose text is "0": a slot always holds a value and its own text.
 NumberTextCache::NumberTextCache() : entries_(std::size_t{1} << kSlotBits, Entry{0, 1, {'0'}}) {}

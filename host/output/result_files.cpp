@@ -9,7 +9,6 @@
 #include <stdexcept>
 
 #include "output/grid_rows.hpp"
-#include "output/number_text.hpp"
 #include "output/staged_directory.hpp"
 
 namespace penumbra {
@@ -36,7 +35,7 @@ namespace {
 
 // JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
 nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(jsonNumber(value)) : nlohmann::json(nullptr);
+  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
 }
 
 }  // namespace

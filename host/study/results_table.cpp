@@ -6,14 +6,13 @@
 
 #include <fmt/format.h>
 
-#include "output/number_text.hpp"
 #include "output/result_files.hpp"
 
 namespace penumbra {
 namespace {
 
 std::string number(double value) {
-  return std::isfinite(value) ? numberText(value) : std::string();
+  return std::isfinite(value) ? fmt::format("{}", value) : std::string();
 }
 
 // Images in the order they first appear; a case without one gets an empty field.

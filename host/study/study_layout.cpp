@@ -5,8 +5,6 @@
 #include <limits>
 #include <stdexcept>
 
-#include "output/number_text.hpp"
-
 namespace penumbra {
 namespace {
 
@@ -16,7 +14,7 @@ using OrderedJson = nlohmann::ordered_json;
 
 // JSON has no NaN: an undefined metric is null, and null reads back as NaN.
 OrderedJson number(double value) {
-  return std::isfinite(value) ? OrderedJson(jsonNumber(value)) : OrderedJson(nullptr);
+  return std::isfinite(value) ? OrderedJson(value) : OrderedJson(nullptr);
 }
 double numberFrom(const Json& json) {
   return json.is_null() ? std::numeric_limits<double>::quiet_NaN() : json.get<double>();
