@@ -79,7 +79,8 @@ std::vector<CsvRow> readCsv(const fs::path& file) {
 }
 
 void expectCompleteResults(const fs::path& out, const std::string& estimator) {
-  for (const char* name : {"floor.csv", "floor.res", "probes.csv", "probes.res", "summary.json"}) {
+  for (const char* name : {"floor.csv", "floor.res", "floor.pts", "probes.csv", "probes.res",
+                           "probes.pts", "summary.json"}) {
     EXPECT_TRUE(fs::exists(out / name)) << name;
   }
   const auto floor = readCsv(out / "floor.csv");

@@ -113,7 +113,7 @@ TEST(NumberText, TheCacheGivesEachValueItsOwnTextWhenValuesShareASlot) {
 
 TEST(GridRows, RowsAreThoseOfThePlainFmtFormat) {
   GridRows rows;
-  std::string csv, res;
+  std::string csv, res, pts;
   std::mt19937 random(5);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
   const std::vector<std::string> fields = {"", "desk", csvField("a, \"b\""), ""};
@@ -126,9 +126,11 @@ TEST(GridRows, RowsAreThoseOfThePlainFmtFormat) {
     csv += fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), e,
                        field);
     res += fmt::format("{}\n", e);
+    pts += fmt::format("{} {} {} {} {} {}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
   }
   EXPECT_EQ(rows.csv(), csv);
   EXPECT_EQ(rows.res(), res);
+  EXPECT_EQ(rows.pts(), pts);
   rows.clear();
   rows.addIlluminance(1e-30);
   EXPECT_EQ(rows.csv(), "");
@@ -172,7 +174,7 @@ TEST(GridFileWriter, FilesWrittenBatchByBatchAreThoseOfThePlainFmtFormat) {
   files.close();
 
   const GridSamples samples = gridSamples(scene, grid);
-  std::string csv = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n", res;
+  std::string csv = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n", res, pts;
   int insideBox = 0;
   for (std::size_t i = 0; i < grid.size(); ++i) {
     const Vec3 p = grid.position(i), n = grid.normal(i);
@@ -182,10 +184,12 @@ TEST(GridFileWriter, FilesWrittenBatchByBatchAreThoseOfThePlainFmtFormat) {
     csv += fmt::format("{},{},{},{},{},{},{},{}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z(), e,
                        in >= 0 ? csvField(scene.solids[in].name) : "");
     res += fmt::format("{}\n", e);
+    pts += fmt::format("{} {} {} {} {} {}\n", p.x(), p.y(), p.z(), n.x(), n.y(), n.z());
   }
   EXPECT_GT(insideBox, 0);
   EXPECT_EQ(readText(dir.path() / "plane.csv"), csv);
   EXPECT_EQ(readText(dir.path() / "plane.res"), res);
+  EXPECT_EQ(readText(dir.path() / "plane.pts"), pts);
 }
 
 TEST(GridEvaluation, ClassifyingAheadKeepsTheBatchesAndTheAnswers) {

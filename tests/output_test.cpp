@@ -211,6 +211,9 @@ TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
     EXPECT_EQ(csv[0], "x_m,y_m,z_m,nx,ny,nz,E_lx,inside");
     const auto res = lines(readText(dir.path() / "out" / (stem + ".res")));
     ASSERT_EQ(res.size(), grid.points.size());
+    // Radiance's order beside it: x y z nx ny nz, one point a line, as the .res lines.
+    const auto pts = lines(readText(dir.path() / "out" / (stem + ".pts")));
+    ASSERT_EQ(pts.size(), grid.points.size());
     for (std::size_t i = 0; i < grid.points.size(); ++i) {
       const auto f = csvFields(csv[i + 1]);
       ASSERT_EQ(f.size(), 8u) << csv[i + 1];
@@ -221,6 +224,14 @@ TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
       EXPECT_EQ(std::stod(f[6]), grid.illuminance[i]);  // exact: shortest round-trip form
       EXPECT_EQ(f[7], grid.insideSolids[i]);
       EXPECT_EQ(std::stod(res[i]), grid.illuminance[i]);
+      std::istringstream point(pts[i]);
+      double x[6];
+      for (double& v : x) ASSERT_TRUE(point >> v) << pts[i];
+      EXPECT_TRUE((point >> std::ws).eof()) << pts[i];
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(x[k], grid.points[i].position[k]);
+        EXPECT_EQ(x[3 + k], grid.points[i].normal[k]);
+      }
     }
   }
 }
@@ -242,6 +253,7 @@ TEST(ResultFiles, SummaryJsonReadsBack) {
   EXPECT_EQ(g["name"], "desk top");
   EXPECT_EQ(g["csv"], "desk_top.csv");
   EXPECT_EQ(g["res"], "desk_top.res");
+  EXPECT_EQ(g["pts"], "desk_top.pts");
   EXPECT_EQ(g["points"].get<std::size_t>(), 3u);
   EXPECT_EQ(g["points_inside_solids"].get<std::size_t>(), 1u);
   EXPECT_EQ(g["spacing_m"].get<double>(), 0.5);
@@ -293,8 +305,9 @@ TEST(ResultFiles, AnExistingDirectoryKeepsTheFilesPenumbraDidNotWrite) {
   std::vector<std::string> names;
   for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename());
   std::sort(names.begin(), names.end());
-  EXPECT_EQ(names, (std::vector<std::string>{"desk_top.csv", "desk_top.res", "notes.txt",
-                                             "summary.json", "work-plane.csv", "work-plane.res"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"desk_top.csv", "desk_top.pts", "desk_top.res",
+                                             "notes.txt", "summary.json", "work-plane.csv",
+                                             "work-plane.pts", "work-plane.res"}));
 }
 
 TEST(ResultFiles, NewDirectoriesAppearWholeAndNothingElseIsLeft) {
@@ -356,6 +369,33 @@ TEST(SummaryTable, HasTheColumnsAndOneRowPerGrid) {
   EXPECT_EQ(total[0], "E: total illuminance (direct + interreflected)");
   EXPECT_NE(total[1].find("Eavg direct [lx]"), std::string::npos) << total[1];
   EXPECT_NE(total[3].find("123.5"), std::string::npos) << total[3];
+}
+
+// A planar grid's spacing along u and along v, each |side| / points along it; the columns stay
+// aligned with the "×" (one column wide) in them.
+TEST(SummaryTable, ShowsBothSpacingsOfAPlanarGrid) {
+  const CalculationGrid floor = CalculationGrid::planar("floor", GridKind::Rect, Vec3::Zero(),
+                                                        Vec3(3, 0, 0), Vec3(0, 2, 0), 6, 5, 0.5);
+  GridRun computed;
+  computed.name = "floor";
+  computed.metrics = gridMetrics(std::vector<double>(30, 100.0), std::vector<int>(30, -1), 0.5);
+  RunReport run = handMadeRun();
+  run.grids[0] = streamedGridReport(floor, computed);
+  EXPECT_EQ(run.grids[0].spacingU, 3.0 / 6);
+  EXPECT_EQ(run.grids[0].spacingV, 2.0 / 5);
+  const auto rows = lines(summaryTable(run));
+  EXPECT_NE(rows[3].find(" 0.5 × 0.4 | "), std::string::npos) << rows[3];
+  EXPECT_NE(rows[4].find(" 0.5 | "), std::string::npos) << rows[4];  // a point list
+  // Where the third " | " of a row is, in terminal columns (UTF-8 code points).
+  const auto thirdBar = [](const std::string& row) {
+    std::size_t at = 0;
+    for (int k = 0; k < 3; ++k) at = row.find(" | ", at + 1);
+    const std::string before = row.substr(0, at);
+    return std::count_if(before.begin(), before.end(),
+                         [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; });
+  };
+  EXPECT_EQ(thirdBar(rows[3]), thirdBar(rows[1]));
+  EXPECT_EQ(thirdBar(rows[4]), thirdBar(rows[1]));
 }
 
 TEST(SummaryTable, UniformityOnlyForAreas) {

@@ -829,13 +829,29 @@ materials:
               4, "materials.paint", "appears twice");
 }
 
-TEST(Errors, BadYamlSyntax) {
+// A flow map or list without its '}' or ']' is named on the line that opened it, not on the next
+// line, where the parser notices.
+TEST(Errors, AMissingClosingBracketIsNamedOnItsLine) {
   expectError(R"(penumbra: 1
 sources:
   - {name: p, polygon: [[0, 0, 2], [1, 0, 2], [1, 1, 2]], luminance: 1
 grids: []
 )",
-              4, "", "not valid YAML");
+              3, "", "not valid YAML: the '{' opened on this line is not closed with '}'");
+  expectError(R"(penumbra: 1
+# a comment with { and a "quoted [" do not count
+room: {size: [3, 3, 3]}
+solids:
+  - {name: desk, box: {min: [0, 0, 0], max: [1, 1, 0.7]}
+  - {name: shelf, box: {min: ["1", 0, 0], max: [2, 1, 2]}}
+grids: []
+)",
+              5, "", "not valid YAML: the '{' opened on this line is not closed with '}'");
+  expectError(R"(penumbra: 1
+room: {size: [3, 3, 3}
+grids: []
+)",
+              2, "", "not valid YAML");
 }
 
 TEST(Errors, WrongTypes) {

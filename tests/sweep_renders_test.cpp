@@ -2,22 +2,30 @@
 // and a reflectance sweep changes the image by exactly the reflectance, not the illuminance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "output/image_files.hpp"
+#include "png_reader.hpp"
 #include "scene/scene_loader.hpp"
 #include "study/case_renders.hpp"
 #include "study/study_reader.hpp"
 #include "study/sweep_runner.hpp"
 #include "test_files.hpp"
+#include "tonemap/tone_map.hpp"
 
 namespace penumbra {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::readPng;
 using testing::readText;
 using testing::TempDir;
 
@@ -126,6 +134,92 @@ TEST(SweepRenders, WithInterreflectionTheFloorsReflectanceLightsTheRoom) {
     }
   EXPECT_GT(others, 48 * 32 / 8);
   EXPECT_EQ(brighter, others);
+}
+
+// The study of kScene in `dir` with the renders exposed as `exposure` (sweep --exposure), and
+// the settings of a sweep of it into dir/out on the CPU, direct light only.
+struct RenderSweep {
+  Study study;
+  SweepSettings settings;
+};
+RenderSweep renderSweep(const fs::path& dir, const std::string& exposure) {
+  write(dir / "scene.yaml", kScene);
+  write(dir / "study.yaml", kStudy);
+  RenderSweep sweep{loadStudy(dir / "study.yaml"), {}};
+  sweep.study.renderExposure = exposure;
+  sweep.settings.output = dir / "out";
+  sweep.settings.estimator.device = "cpu";
+  // Direct light only: the cases then differ on the floor alone, and every other face shows the
+  // same luminance in both.
+  sweep.settings.estimator.interreflection = false;
+  sweep.settings.version = "test";
+  sweep.settings.caseOutputs = {std::make_shared<CaseRenders>(
+      sweep.study.renders, sweep.settings.estimator, exposure, sweep.settings.output)};
+  return sweep;
+}
+
+// With a fixed exposure (`sweep --exposure 40`) every case's PNG shows a luminance L as the drive
+// value 255 × L / 40 cd/m² (cut to the display's black and white): the same cd/m² is the same
+// pixel value in both cases, the floor (its reflectance tripled) three times as bright.
+TEST(SweepRenders, AFixedExposureShowsTheSameLuminanceAsTheSamePixelValueInEveryCase) {
+  TempDir dir("penumbra-sweep-renders");
+  const double white = 40.0, black = ToneMapOptions{}.black;  // cd/m²; fraction of white
+  const RenderSweep sweep = renderSweep(dir.path(), "40");
+  SweepObserver silent;
+  runSweep(sweep.study, sweep.settings, silent);
+  std::vector<RgbImage> luminance;
+  std::vector<DisplayImage> png;
+  for (const char* folder : {"out/cases/case-001", "out/cases/case-002"}) {
+    luminance.push_back(readRgbExr(dir.path() / folder / "corner.exr"));
+    png.push_back(readPng(dir.path() / folder / "corner.png"));
+  }
+  int same = 0, shown = 0;
+  for (int y = 0; y < png[0].height; ++y)
+    for (int x = 0; x < png[0].width; ++x) {
+      std::array<int, 2> drive{};
+      for (int c = 0; c < 2; ++c) {
+        const float* rgb = luminance[c].pixel(x, y);
+        const double v = std::clamp(std::max({rgb[0], rgb[1], rgb[2]}) / white, black, 1.0);
+        const size_t at = (static_cast<size_t>(y) * png[c].width + x) * png[c].channels;
+        drive[c] = *std::max_element(&png[c].values[at], &png[c].values[at] + 3);
+        // Rounded to the nearest of 256 levels.
+        EXPECT_NEAR(drive[c], 255.0 * v, 0.5 + 1e-3) << x << "," << y;
+        if (v > black && v < 1.0) ++shown;
+      }
+      if (luminance[0].pixel(x, y)[1] == luminance[1].pixel(x, y)[1]) {
+        EXPECT_EQ(drive[0], drive[1]) << x << "," << y;
+        ++same;
+      }
+    }
+  EXPECT_GT(same, 48 * 32 / 8);
+  EXPECT_GT(shown, 48 * 32 / 4);  // most pixels lie between black and white, not cut
+}
+
+// auto-first: the first case is exposed automatically (clip's log average at 18 %), and its white
+// is kept (OUT/exposure.json) for every other case, also for those a later run adds.
+TEST(SweepRenders, AutoFirstExposesEveryCaseWithTheFirstCasesWhite) {
+  TempDir dir("penumbra-sweep-renders");
+  SweepObserver silent;
+  // Case 1 first, case 2 by a later run (a new writer, as a new process has).
+  for (const Shard shard : {Shard{1, 2}, Shard{2, 2}}) {
+    RenderSweep sweep = renderSweep(dir.path(), "auto-first");
+    sweep.settings.shard = shard;
+    runSweep(sweep.study, sweep.settings, silent);
+  }
+  const fs::path first = dir.path() / "out/cases/case-001";
+  ToneMapOptions automatic;
+  automatic.method = DisplayMethod::Clip;
+  ToneMapStats firstStats;
+  toneMap(readRgbExr(first / "corner.exr"), readFaceIdExr(first / "corner.faceid.exr"), automatic,
+          &firstStats);
+  const double white =
+      nlohmann::json::parse(readText(dir.path() / "out/exposure.json"))["white_cdm2"];
+  EXPECT_EQ(white, firstStats.white);
+  for (const char* folder : {"out/cases/case-001", "out/cases/case-002"}) {
+    const auto stats = nlohmann::json::parse(readText(dir.path() / folder / "corner.tonemap.json"));
+    EXPECT_EQ(stats["method"], "clip") << folder;
+    EXPECT_EQ(stats["white_cdm2"], white) << folder;
+  }
 }
 
 TEST(SweepRenders, AnUnknownViewIsAnErrorNamingTheScenesViews) {

@@ -2,6 +2,7 @@
 // hooks that a binary with viz/ sets (fakes here, so that host/ is tested without VTK).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -121,9 +122,11 @@ class FakeOutput : public CaseOutputWriter {
 
 TEST_F(SweepRunner, ChartsAndPlotsGoThroughTheHooks) {
   std::vector<LineChart> drawn;
-  settings_.charts = [&](const LineChart& chart, const fs::path& png) {
-    drawn.push_back(chart);
-    std::ofstream(png) << "png";
+  settings_.charts.draw = [&](const std::vector<ChartFile>& charts, const fs::path& directory) {
+    for (const ChartFile& c : charts) {
+      drawn.push_back(c.chart);
+      std::ofstream(directory / c.fileName) << "png";
+    }
   };
   const auto plots = std::make_shared<FakeOutput>("plots", "floor-plot.png");
   // A writer the study does not ask for (renders, one day) is not called.
@@ -158,6 +161,61 @@ TEST_F(SweepRunner, ChartsAndPlotsGoThroughTheHooks) {
   EXPECT_NE(plain.outputNotes[0].find("plots: none (this penumbra cannot write them)"),
             std::string::npos)
       << plain.outputNotes[0];
+}
+
+// A chart writer that stops halfway (VTK aborting its child process) costs only the charts it did
+// not draw: the tables are written, the missing charts named, and a rerun draws only those; charts
+// whose data did not change are kept.
+TEST_F(SweepRunner, ChartsNotDrawnAreNamedAndARerunDrawsOnlyThem) {
+  std::vector<std::string> asked;
+  settings_.charts.draw = [&](const std::vector<ChartFile>& charts, const fs::path& directory) {
+    for (const ChartFile& c : charts) asked.push_back(c.fileName);
+    std::ofstream(directory / charts.front().fileName) << "png";
+    if (charts.size() > 1) throw std::runtime_error("killed by signal 6 (Aborted)");
+  };
+  const SweepSummary broken = run();
+  EXPECT_EQ(broken.table.rows, 6u);
+  EXPECT_TRUE(fs::exists(out("results.csv")));
+  ASSERT_EQ(asked.size(), 10u);  // 5 metrics × 2 varied parameters
+  EXPECT_EQ(broken.table.charts, 1u);
+  ASSERT_EQ(broken.table.chartsMissing.size(), 9u);
+  EXPECT_EQ(broken.table.chartsMissing.front(), asked[1]);
+  EXPECT_EQ(broken.table.chartsError, "killed by signal 6 (Aborted)");
+  EXPECT_TRUE(fs::exists(out("charts") / asked[0]));
+  EXPECT_FALSE(fs::exists(out("charts") / asked[1]));
+
+  // The rerun computes nothing and draws the 9 missing charts one by one (this writer draws one
+  // per call); the one already drawn is not asked for again.
+  std::vector<std::string> missing(asked.begin() + 1, asked.end());
+  std::vector<std::string> redrawn;
+  for (std::size_t round = 1; round <= 9; ++round) {
+    asked.clear();
+    const SweepSummary rerun = run();
+    EXPECT_EQ(rerun.computed, 0u);
+    ASSERT_FALSE(asked.empty());
+    redrawn.push_back(asked.front());
+    EXPECT_EQ(rerun.table.charts, 1u + round);
+    EXPECT_EQ(rerun.table.chartsMissing.size(), 9u - round);
+  }
+  EXPECT_EQ(redrawn, missing);
+  asked.clear();
+  const SweepSummary complete = run();
+  EXPECT_TRUE(asked.empty());
+  EXPECT_EQ(complete.table.charts, 10u);
+  EXPECT_TRUE(complete.table.chartsMissing.empty());
+
+  // New results (a bigger panel) change the charts' data: those charts are drawn again.
+  std::string bigger = kParameterisedRoom;
+  bigger.replace(bigger.find("size: [0.5, 0.5]"), 16, "size: [0.6, 0.6]");
+  write(dir_.path() / "scene.yaml", bigger);
+  settings_.charts.draw = [&](const std::vector<ChartFile>& charts, const fs::path& directory) {
+    for (const ChartFile& c : charts) {
+      asked.push_back(c.fileName);
+      std::ofstream(directory / c.fileName) << "png";
+    }
+  };
+  EXPECT_EQ(run().computed, 6u);
+  EXPECT_NE(std::find(asked.begin(), asked.end(), "Eavg_lx-vs-flux.png"), asked.end());
 }
 
 // A writer that cannot work here (no display) is left out of the whole run, and the cases are

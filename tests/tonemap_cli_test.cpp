@@ -7,6 +7,7 @@
 #include "output/image_files.hpp"
 #include "output/tone_map_files.hpp"
 #include "penumbra_process.hpp"
+#include "png_reader.hpp"
 #include "synthetic_images.hpp"
 #include "test_files.hpp"
 #include "tonemap/edge_contrast.hpp"
@@ -20,16 +21,7 @@ namespace {
 using testing::Result;
 using testing::runPenumbra;
 
-DisplayImage readPng(const std::filesystem::path& path) {
-  auto input = OIIO::ImageInput::open(path.string());
-  EXPECT_TRUE(input) << path;
-  DisplayImage image;
-  image.width = input->spec().width, image.height = input->spec().height;
-  image.channels = input->spec().nchannels;
-  image.values.resize(static_cast<size_t>(image.width) * image.height * image.channels);
-  input->read_image(0, 0, 0, image.channels, OIIO::TypeDesc::UINT8, image.values.data());
-  return image;
-}
+using testing::readPng;
 
 TEST(ToneMapCli, WritesThePngAndItsStatistics) {
   const testing::TempDir dir("tonemap-cli");
@@ -81,6 +73,39 @@ TEST(ToneMapCli, BaselinesGoThroughTheSameOutput) {
     EXPECT_EQ(readPng(dir.path() / (std::string(method) + ".png")).values,
               toneMap(scene.hdr, scene.faces, options).values);
   }
+}
+
+// --exposure: a fixed white in cd/m² (the clip display), so that pictures compare: twice the
+// luminance with twice the white is the very same PNG, and the statistics name the white.
+TEST(ToneMapCli, AFixedExposureMapsTheSameLuminanceToTheSameValue) {
+  const testing::TempDir dir("tonemap-cli");
+  const testing::HdrScene scene = testing::roomView(64, 36, 2);
+  RgbImage brighter = scene.hdr;
+  for (float& v : brighter.rgb) v *= 2.0f;
+  writeRgbExr(dir.path() / "view.exr", scene.hdr);
+  writeRgbExr(dir.path() / "brighter.exr", brighter);
+  writeFaceIdExr(dir.path() / "faces.exr", scene.faces);
+  ASSERT_EQ(
+      runPenumbra(dir.path(), "tonemap view.exr --faces faces.exr -o a.png --exposure 30").status,
+      0);
+  ASSERT_EQ(runPenumbra(dir.path(), "tonemap brighter.exr --faces faces.exr -o b.png --exposure 60")
+                .status,
+            0);
+  ToneMapOptions options;
+  options.method = DisplayMethod::Clip;
+  options.white = 30;
+  const DisplayImage a = readPng(dir.path() / "a.png");
+  EXPECT_EQ(a.values, toneMap(scene.hdr, scene.faces, options).values);
+  EXPECT_EQ(readPng(dir.path() / "b.png").values, a.values);
+  const auto stats = nlohmann::json::parse(testing::readText(dir.path() / "a.tonemap.json"));
+  EXPECT_EQ(stats["method"], "clip");
+  EXPECT_EQ(stats["white_cdm2"], 30.0);
+  // A fixed exposure is the clip display: another display with it is a usage error.
+  const Result r = runPenumbra(
+      dir.path(), "tonemap view.exr --faces faces.exr -o c.png --exposure 30 --display linear");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--exposure"), std::string::npos) << r.err;
+  EXPECT_EQ(runPenumbra(dir.path(), "tonemap view.exr -o c.png --exposure 0").status, 1);
 }
 
 TEST(ToneMapCli, BadInputIsAUsageError) {

@@ -54,9 +54,10 @@ TEST(PlotCli, GridWithPlotWritesEveryPicture) {
   std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
   const Outcome run = penumbra(dir.path(), "grid room.yaml -o out --plot --width 800 -q");
   ASSERT_EQ(run.status, 0) << run.err;
-  const std::set<std::string> expected{
-      "work-plane.csv", "work-plane.res", "sensors.csv", "sensors.res",  "summary.json",
-      "work-plane.png", "work-plane.vti", "sensors.vtp", "surfaces.vtp", "surfaces.png"};
+  const std::set<std::string> expected{"work-plane.csv", "work-plane.res", "work-plane.pts",
+                                       "sensors.csv",    "sensors.res",    "sensors.pts",
+                                       "summary.json",   "work-plane.png", "work-plane.vti",
+                                       "sensors.vtp",    "surfaces.vtp",   "surfaces.png"};
   EXPECT_EQ(filesIn(dir.path() / "out"), expected);
   const penumbra::testing::Png png(dir.path() / "out" / "work-plane.png");
   EXPECT_EQ(png.width(), 800);
@@ -113,14 +114,21 @@ TEST(PlotCli, PlotsOfASetParameterShowTheGeometryThatWasComputed) {
             readText(dir.path() / "b" / "out" / "surfaces.png"));
 }
 
+// The parameterised room (room.yaml) and a study (study.yaml) of its work plane over the cabinet
+// positions `values`, with `more` study keys.
+void writeCabinetStudy(const fs::path& dir, const std::string& values, const std::string& more) {
+  writeParameterisedRoom(dir, 5.5);
+  std::ofstream(dir / "study.yaml") << "penumbra-study: 1\nscene: room.yaml\nparameters:\n"
+                                       "  cabinet_x_m: "
+                                    << values << "\ngrids: [work-plane]\n"
+                                    << more;
+}
+
 // A sweep with `plots: true` draws each case's plots as `grid --set ... --plot` draws that case
 // alone: the same pictures and ParaView files, listed as the case's images.
 TEST(PlotCli, ASweepDrawsEachCaseAsGridPlotDrawsIt) {
   TempDir dir("viz-cli");
-  writeParameterisedRoom(dir.path(), 5.5);
-  std::ofstream(dir.path() / "study.yaml")
-      << "penumbra-study: 1\nscene: room.yaml\nparameters:\n  cabinet_x_m: [1, 3]\n"
-         "grids: [work-plane]\nplots: true\ncharts: false\n";
+  writeCabinetStudy(dir.path(), "[1, 3]", "plots: true\ncharts: false\n");
   const Outcome sweep = penumbra(dir.path(), "sweep study.yaml -o sweep -q");
   ASSERT_EQ(sweep.status, 0) << sweep.err;
   const Outcome alone = penumbra(
@@ -143,6 +151,43 @@ TEST(PlotCli, ASweepDrawsEachCaseAsGridPlotDrawsIt) {
   ASSERT_EQ(blind.status, 0) << blind.err;
   EXPECT_TRUE(fs::exists(dir.path() / "blind" / "cases" / "case-002" / "case.json"));
   EXPECT_FALSE(fs::exists(dir.path() / "blind" / "cases" / "case-002" / "work-plane.png"));
+}
+
+// A display that goes away while the charts are drawn (VTK aborts the process drawing them): the
+// sweep keeps every result, names the charts it could not draw and fails; the rerun draws them,
+// and only the charts that are missing.
+TEST(PlotCli, ChartsThatAbortCostNoResultsAndARerunDrawsThem) {
+  TempDir dir("viz-cli");
+  writeCabinetStudy(dir.path(), "[1, 2, 3]", "");
+  const fs::path charts = dir.path() / "out" / "charts";
+  const Outcome broken = penumbra(dir.path(), "sweep study.yaml -o out -q", "env DISPLAY=:9999");
+  EXPECT_EQ(broken.status, 1) << broken.err;
+  EXPECT_NE(broken.err.find("5 charts not drawn"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("Eavg_lx-vs-cabinet_x_m.png"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("killed by signal 6"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("the results are written"), std::string::npos) << broken.err;
+  EXPECT_EQ(penumbra::testing::lines(readText(dir.path() / "out" / "results.csv")).size(), 4u);
+  EXPECT_TRUE(fs::exists(dir.path() / "out" / "cases" / "case-003" / "case.json"));
+  EXPECT_FALSE(fs::exists(charts / "Eavg_lx-vs-cabinet_x_m.png"));
+
+  const Outcome rerun = penumbra(dir.path(), "sweep study.yaml -o out -q");
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_EQ(rerun.err, "");
+  std::set<std::string> pngs;
+  for (const std::string& name : filesIn(charts)) {
+    if (name.ends_with(".png")) pngs.insert(name);
+  }
+  EXPECT_EQ(pngs.size(), 5u);  // Eavg, Emin, Emax, U0, Ud against cabinet_x_m
+
+  // One chart lost: the rerun draws it and leaves the others as they are.
+  const fs::path kept = charts / "Eavg_lx-vs-cabinet_x_m.png";
+  const fs::path lost = charts / "U0-vs-cabinet_x_m.png";
+  ASSERT_TRUE(fs::exists(lost));
+  const auto keptTime = fs::last_write_time(kept);
+  fs::remove(lost);
+  ASSERT_EQ(penumbra(dir.path(), "sweep study.yaml -o out -q").status, 0);
+  EXPECT_TRUE(fs::exists(lost));
+  EXPECT_EQ(fs::last_write_time(kept), keptTime);
 }
 
 TEST(PlotCli, WithoutADisplayItSaysHowAndWritesNothing) {

@@ -13,12 +13,7 @@ CasePlots::CasePlots(PlotOptions options) : options_(std::move(options)) {}
 CasePlots::~CasePlots() = default;
 
 std::string CasePlots::unavailable() const {
-  try {
-    requireDisplay();
-  } catch (const std::runtime_error& e) {
-    return e.what();
-  }
-  return "";
+  return displayUnavailable();
 }
 
 std::vector<std::string> CasePlots::write(const Scene& scene, const RunReport& report,

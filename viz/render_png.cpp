@@ -10,14 +10,16 @@
 
 namespace penumbra::viz {
 
-void requireDisplay() {
+std::string displayUnavailable() {
   const char* display = std::getenv("DISPLAY");
-  if (display == nullptr || *display == '\0') {
-    throw std::runtime_error(
-        "plots are rendered through X and no display is set ($DISPLAY is empty); on a machine "
-        "without one, run the command under a virtual X server:\n"
-        "  xvfb-run -a -s \"-screen 0 1920x1080x24\" penumbra ...");
-  }
+  if (display != nullptr && *display != '\0') return "";
+  return "plots are rendered through X and no display is set ($DISPLAY is empty); on a machine "
+         "without one, run the command under a virtual X server:\n"
+         "  xvfb-run -a -s \"-screen 0 1920x1080x24\" penumbra ...";
+}
+
+void requireDisplay() {
+  if (const std::string why = displayUnavailable(); !why.empty()) throw std::runtime_error(why);
 }
 
 void renderToPng(vtkRenderer* renderer, int width, int height, const std::filesystem::path& png) {

@@ -2,12 +2,17 @@
 // Rendering to a PNG file. Debian's VTK renders through X only (docs/building.md): without a
 // display it aborts, so callers check first and say how to get one.
 #include <filesystem>
+#include <string>
 
 #include <vtkRenderer.h>
 
 namespace penumbra::viz {
 
-// Throws std::runtime_error, with the xvfb-run command line to use, when $DISPLAY is not set.
+// Why nothing can be rendered here, with the xvfb-run command line to use, when $DISPLAY is not
+// set; "" when it is.
+std::string displayUnavailable();
+
+// Throws std::runtime_error with displayUnavailable() when $DISPLAY is not set.
 void requireDisplay();
 
 // Renders `renderer` (alone in an off-screen window of width × height px, no multisampling, so

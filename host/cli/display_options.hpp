@@ -11,14 +11,27 @@ namespace penumbra::cli {
 
 inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
   // By name only (a plain enum option would also take 0, 1, 2 and print them in --help).
+  CLI::Option* display =
+      command
+          .add_option_function<std::string>(
+              "--display",
+              [&options](const std::string& name) { options.method = displayMethodFromName(name); },
+              "How HDR luminance becomes display values: constraint (Fang's constraint hierarchy, "
+              "default), linear (thesis eq. 4.2), clip (auto exposure, cut)")
+          ->check(CLI::IsMember({"clip", "linear", "constraint"}, CLI::ignore_case))
+          ->type_name("clip|linear|constraint");
   command
-      .add_option_function<std::string>(
-          "--display",
-          [&options](const std::string& name) { options.method = displayMethodFromName(name); },
-          "How HDR luminance becomes display values: constraint (Fang's constraint hierarchy, "
-          "default), linear (thesis eq. 4.2), clip (auto exposure, cut)")
-      ->check(CLI::IsMember({"clip", "linear", "constraint"}, CLI::ignore_case))
-      ->type_name("clip|linear|constraint");
+      .add_option_function<double>(
+          "--exposure",
+          [&options](double white) {
+            options.method = DisplayMethod::Clip;
+            options.white = white;
+          },
+          "A fixed exposure: this luminance in cd/m2 is white (the clip display, cut to black "
+          "and white), so that pictures compare: the same cd/m2 is the same pixel value in each")
+      ->check(CLI::PositiveNumber)
+      ->excludes(display)
+      ->type_name("CDM2");
   command
       .add_option("--black", options.black,
                   "The display's black as a fraction of its white (LowerBound)")

@@ -11,6 +11,7 @@
 #include "cli/sweep_options.hpp"
 #include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
+#include "cluster/child_process.hpp"
 #include "output/interrupt_cleanup.hpp"
 #include "viz/case_plots.hpp"
 #include "viz/isoband_svg.hpp"
@@ -72,13 +73,19 @@ int main(int argc, char** argv) {
   CLI::App* sweepCommand = penumbra::cli::addSweepCommand(app, sweep);
   penumbra::MergeOptions merge;
   CLI::App* mergeCommand = penumbra::cli::addMergeCommand(app, merge);
-  // Sweep charts are drawn by viz/ (host/ never includes it). VTK aborts without X, so the display
-  // is checked first: without one a sweep says how to get charts instead of crashing.
-  sweep.charts =
-      merge.charts = [](const penumbra::LineChart& chart, const std::filesystem::path& png) {
-        penumbra::viz::requireDisplay();
-        penumbra::viz::writeLineChart(chart, png);
-      };
+  // Sweep charts are drawn by viz/ (host/ never includes it). VTK aborts the process when its X
+  // display is missing or goes away: without a display the sweep says how to get charts, and
+  // with one the charts are drawn in a child process, so that an abort there costs the charts
+  // not yet drawn, never the results.
+  const penumbra::ChartDrawing drawCharts = [](const std::vector<penumbra::ChartFile>& charts,
+                                               const std::filesystem::path& directory) {
+    penumbra::runInChildProcess([&] {
+      for (const penumbra::ChartFile& c : charts) {
+        penumbra::viz::writeLineChart(c.chart, directory / c.fileName);
+      }
+    });
+  };
+  sweep.charts = merge.charts = {drawCharts, penumbra::viz::displayUnavailable()};
 
   penumbra::ToneMapCommandOptions toneMap;
   CLI::App* toneMapCommand = penumbra::cli::addToneMapCommand(app, toneMap);

@@ -9,20 +9,32 @@
 
 #include "illuminance/estimator.hpp"
 #include "scene/parameters.hpp"
+#include "study/render_exposure.hpp"
 
 namespace penumbra::cli {
 
+// A check from a parser that throws std::invalid_argument saying what is wrong.
+template <typename Parse>
+CLI::Validator checkedBy(Parse parse, const std::string& name) {
+  return CLI::Validator(
+      [parse](std::string& text) -> std::string {
+        try {
+          parse(text);
+          return {};
+        } catch (const std::invalid_argument& e) {
+          return e.what();
+        }
+      },
+      name);
+}
+
 // NAME=VALUE, as `--set window_width_m=1.6` takes it.
-inline const CLI::Validator kParameterAssignment(
-    [](std::string& text) -> std::string {
-      try {
-        parseParameterAssignment(text);
-        return {};
-      } catch (const std::invalid_argument& e) {
-        return e.what();
-      }
-    },
-    "NAME=VALUE");
+inline const CLI::Validator kParameterAssignment =
+    checkedBy([](const std::string& text) { parseParameterAssignment(text); }, "NAME=VALUE");
+
+// `sweep --exposure`: a white in cd/m², or auto-first.
+inline const CLI::Validator kStudyExposure =
+    checkedBy([](const std::string& text) { parseRenderExposure(text); }, "CDM2|auto-first");
 
 // --device: the OpenCL device a command computes on.
 inline void addDeviceOption(CLI::App& command, std::string& device) {

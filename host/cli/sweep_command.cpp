@@ -41,6 +41,22 @@ void printTable(const TableSummary& table, const std::filesystem::path& output) 
   }
 }
 
+// Charts that could not be drawn: a clear error naming them (the results are there) and exit
+// status 1; 0 when every chart is there.
+int reportMissingCharts(const TableSummary& table, const std::filesystem::path& output,
+                        const std::string& rerun) {
+  if (table.chartsMissing.empty()) return 0;
+  std::string names;
+  for (const std::string& name : table.chartsMissing) names += (names.empty() ? "" : ", ") + name;
+  fmt::print(stderr,
+             "penumbra: error: {} chart{} not drawn in {}/charts ({}): {}\n"
+             "  the results are written (results.csv, cases/); {} draws only the missing "
+             "charts\n",
+             table.chartsMissing.size(), table.chartsMissing.size() == 1 ? "" : "s",
+             normalizedTarget(output).string(), names, table.chartsError, rerun);
+  return 1;
+}
+
 std::string commandLine(const std::vector<std::string>& words) {
   std::string text;
   for (const std::string& w : words) {
@@ -110,17 +126,23 @@ int runSweepCommand(const SweepOptions& options) {
     settings.caseOutputs = options.caseOutputs;
 
     const auto start = std::chrono::steady_clock::now();
-    const Study study = loadStudy(options.study);
+    Study study = loadStudy(options.study);
+    study.renderExposure = options.exposure;
+    if (!options.exposure.empty() && study.renders.empty()) {
+      throw std::invalid_argument("--exposure: the study renders nothing (it has no `renders:`)");
+    }
     // Renders need no display: host/ writes them, on the device the grids use.
     if (!study.renders.empty() && !options.estimator.reference) {
-      settings.caseOutputs.push_back(
-          std::make_shared<CaseRenders>(study.renders, options.estimator));
+      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(
+          study.renders, options.estimator, options.exposure, options.output));
     }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.quiet) return 0;
+    if (options.quiet) {
+      return reportMissingCharts(summary.table, options.output, "the same command run again");
+    }
     std::string shard;
     if (settings.shard.count > 1) {
       shard = fmt::format(" (shard {}/{})", settings.shard.index, settings.shard.count);
@@ -133,7 +155,7 @@ int runSweepCommand(const SweepOptions& options) {
                summary.skipped, seconds, summary.device.empty() ? "" : " · on " + summary.device);
     for (const std::string& note : summary.outputNotes) fmt::print("{}\n", note);
     printTable(summary.table, options.output);
-    return 0;
+    return reportMissingCharts(summary.table, options.output, "the same command run again");
   });
 }
 
@@ -141,7 +163,7 @@ int runMergeCommand(const MergeOptions& options) {
   return cli::reportingErrors([&] {
     const TableSummary table = mergeSweeps(options.inputs, options.output, options.charts);
     if (!options.quiet) printTable(table, options.output);
-    return 0;
+    return reportMissingCharts(table, options.output, "`penumbra merge` run again");
   });
 }
 

@@ -22,6 +22,8 @@ struct SweepOptions {
   int shards = 0;                         // --shards N; 0: with --resume, as submitted
   std::vector<std::string> slurmOptions;  // --slurm-opt, each split into words
   bool dryRun = false;
+  // --exposure for the renders: "" (each case on its own), a white in cd/m², or "auto-first".
+  std::string exposure;
   ChartWriter charts;  // set by main() when the binary has viz/
   std::vector<std::shared_ptr<CaseOutputWriter>> caseOutputs;  // likewise (per-case plots)
 };

@@ -41,6 +41,14 @@ inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
                  "With --slurm: write the batch scripts into OUT/slurm and print the sbatch "
                  "commands, submit nothing")
       ->needs(slurm);
+  command
+      ->add_option("--exposure", options.exposure,
+                   "Renders (`renders:`) with one fixed exposure for the whole study, so that "
+                   "they compare: a luminance in cd/m2 shown as white, or auto-first (the "
+                   "automatic exposure of the first case rendered, kept for every other)")
+      ->check(kStudyExposure)
+      ->excludes(slurm)
+      ->type_name("CDM2|auto-first");
   return command;
 }
 

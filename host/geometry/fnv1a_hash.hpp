@@ -1,10 +1,13 @@
 #pragma once
 // FNV-1a over the exact bits of numbers and the bytes of names: a 64-bit fingerprint that tells
-// changed inputs apart (a case's fingerprint, the interreflection's transfer cache). Nothing here
-// needs a cryptographic hash.
+// changed inputs apart (a case's fingerprint, the charts a sweep drew, the interreflection's
+// transfer cache). Nothing here needs a cryptographic hash.
 #include <bit>
 #include <cstdint>
+#include <string>
 #include <string_view>
+
+#include <fmt/format.h>
 
 #include "geometry/convex_polygon.hpp"
 #include "geometry/vec.hpp"
@@ -33,6 +36,7 @@ class Fnv1a {
     for (const Vec3& v : polygon.vertices()) add(v);
   }
   std::uint64_t value() const { return hash_; }
+  std::string hex() const { return fmt::format("{:016x}", hash_); }
 
  private:
   void addByte(unsigned char byte) {

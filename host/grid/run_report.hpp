@@ -20,6 +20,10 @@ struct GridReport {
   // row-major, `columns` along u, `rows` along v; 0 × 0 for point lists.
   GridKind kind = GridKind::Points;
   int columns = 0, rows = 0;
+  // Planar grids: the distance between neighbouring points along u and along v, m (the cells of
+  // |u| / columns × |v| / rows; the scene's spacing is the largest either may be). 0 for point
+  // lists.
+  double spacingU = 0.0, spacingV = 0.0;
   // Per point, in the grid's order. Empty when the points went to the files batch by batch
   // (`penumbra grid`, streamGrid): summary.json and the table need only the rest.
   std::vector<SamplePoint> points;

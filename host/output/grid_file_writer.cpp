@@ -14,10 +14,13 @@ GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Sce
   const std::string stem = gridFileStem(grid.name);
   csvPath_ = directory / (stem + ".csv");
   resPath_ = directory / (stem + ".res");
+  ptsPath_ = directory / (stem + ".pts");
   csv_.open(csvPath_, std::ios::binary);
   if (!csv_) throw std::runtime_error("cannot create " + csvPath_.string());
   res_.open(resPath_, std::ios::binary);
   if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
+  pts_.open(ptsPath_, std::ios::binary);
+  if (!pts_) throw std::runtime_error("cannot create " + ptsPath_.string());
   const std::string_view header = gridCsvHeader(withParts);
   csv_.write(header.data(), static_cast<std::streamsize>(header.size()));
   thread_ = std::thread([this] { writeBatches(); });
@@ -58,6 +61,8 @@ void GridFileWriter::close() {
   if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
   res_.close();
   if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+  pts_.close();
+  if (!pts_) throw std::runtime_error("cannot write " + ptsPath_.string());
 }
 
 void GridFileWriter::writeBatches() {
@@ -103,6 +108,8 @@ void GridFileWriter::writeBatch(const Batch& batch) {
   res_.write(rows_.res().data(), static_cast<std::streamsize>(rows_.res().size()));
   if (!csv_) throw std::runtime_error("cannot write " + csvPath_.string());
   if (!res_) throw std::runtime_error("cannot write " + resPath_.string());
+  pts_.write(rows_.pts().data(), static_cast<std::streamsize>(rows_.pts().size()));
+  if (!pts_) throw std::runtime_error("cannot write " + ptsPath_.string());
 }
 
 }  // namespace penumbra

@@ -1,7 +1,7 @@
 #pragma once
-// The .csv and .res files of one grid (grid_rows.hpp), written batch by batch while the grid is
-// evaluated (streamGrid), so that no per-point data outlives its batch; the bytes are those
-// writeGridCsv and writeGridRes write for the same values.
+// The .csv, .res and .pts files of one grid (grid_rows.hpp), written batch by batch while the grid
+// is evaluated (streamGrid), so that no per-point data outlives its batch; the bytes are those
+// writeGridCsv, writeGridRes and writeGridPts write for the same values.
 //
 // write() copies the batch's values and returns: a thread of the writer's own turns them into
 // text and writes them while the next batch is classified and computed. At most two batches are
@@ -25,7 +25,7 @@ namespace penumbra {
 
 class GridFileWriter {
  public:
-  // Creates <directory>/<stem>.csv and .res (gridFileStem) and writes the CSV header. `grid`
+  // Creates <directory>/<stem>.csv, .res and .pts (gridFileStem) and writes the CSV header. `grid`
   // must outlive the writer.
   // With `withParts`, the CSV has the direct and indirect columns (grid_rows.hpp).
   GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
@@ -38,7 +38,7 @@ class GridFileWriter {
   // Hands on the batch; waits while an earlier one still waits. Throws std::runtime_error naming
   // a file that an earlier batch failed to write.
   void write(const GridBatch& batch);
-  // Writes what is left, flushes and closes both files; throws std::runtime_error naming a file
+  // Writes what is left, flushes and closes the files; throws std::runtime_error naming a file
   // that failed.
   void close();
 
@@ -56,8 +56,8 @@ class GridFileWriter {
   const CalculationGrid* grid_;
   bool withParts_ = false;
   std::vector<std::string> insideNames_;  // per solid, as a CSV field
-  std::filesystem::path csvPath_, resPath_;
-  std::ofstream csv_, res_;
+  std::filesystem::path csvPath_, resPath_, ptsPath_;
+  std::ofstream csv_, res_, pts_;
   GridRows rows_;
 
   std::mutex mutex_;

@@ -1,5 +1,6 @@
 #include "output/grid_rows.hpp"
 
+#include <algorithm>
 #include <cstring>
 
 namespace penumbra {
@@ -20,13 +21,16 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminan
   // then cut to what was written (fmt's resize leaves new bytes unset).
   const std::size_t start = csv_.size();
   csv_.resize(start + 9 * (kMaxNumberText + 1) + insideField.size() + 1);
-  char* out = csv_.data() + start;
-  for (const double value :
-       {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
-    out = numbers_.write(out, value);
-    *out++ = ',';
-  }
+  char* out = writePoint(csv_.data() + start, position, normal, ',');
   const char* e = out;
+  // The .pts line: the same six numbers, blank-separated.
+  const std::size_t ptsStart = pts_.size();
+  const auto pointSize = static_cast<std::size_t>(e - (csv_.data() + start));
+  pts_.resize(ptsStart + pointSize);
+  char* point = pts_.data() + ptsStart;
+  std::memcpy(point, csv_.data() + start, pointSize);
+  std::replace(point, point + pointSize, ',', ' ');
+  point[pointSize - 1] = '\n';
   out = writeNumber(out, illuminance);  // E hardly ever repeats: not looked up
   const auto eSize = static_cast<std::size_t>(out - e);
   addResLine(e, eSize);
@@ -41,6 +45,23 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminan
   out += insideField.size();
   *out++ = '\n';
   csv_.resize(static_cast<std::size_t>(out - csv_.data()));
+}
+
+void GridRows::addPoint(const Vec3& position, const Vec3& normal) {
+  const std::size_t start = pts_.size();
+  pts_.resize(start + 6 * (kMaxNumberText + 1));
+  char* end = writePoint(pts_.data() + start, position, normal, ' ');
+  end[-1] = '\n';
+  pts_.resize(static_cast<std::size_t>(end - pts_.data()));
+}
+
+char* GridRows::writePoint(char* out, const Vec3& position, const Vec3& normal, char separator) {
+  for (const double value :
+       {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
+    out = numbers_.write(out, value);
+    *out++ = separator;
+  }
+  return out;
 }
 
 void GridRows::addIlluminance(double illuminance) {

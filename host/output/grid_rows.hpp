@@ -5,6 +5,8 @@
 //                x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside: E_lx the total,
 //                E_indirect_lx = E_lx - E_direct_lx
 //   <grid>.res   E_lx (the total), one value a line
+//   <grid>.pts   x y z nx ny nz (m; unit normal), one point a line in the order of .res: the
+//                points as Radiance's rtrace reads them, so that .res and .pts go together
 // Numbers are written as number_text.hpp says (fmt's "{}": the shortest text that reads back to
 // the same double).
 #include <fmt/format.h>
@@ -35,20 +37,27 @@ class GridRows {
            std::string_view insideField);
   // Appends the .res line alone.
   void addIlluminance(double illuminance);
+  // Appends the .pts line alone.
+  void addPoint(const Vec3& position, const Vec3& normal);
   std::string_view csv() const { return {csv_.data(), csv_.size()}; }
   std::string_view res() const { return {res_.data(), res_.size()}; }
+  std::string_view pts() const { return {pts_.data(), pts_.size()}; }
   void clear() {
     csv_.clear();
     res_.clear();
+    pts_.clear();
   }
 
  private:
   void addResLine(const char* text, std::size_t size);
+  // Writes the six numbers of a point, each followed by `separator`, at `out` (room for six
+  // numbers and separators); returns the end.
+  char* writePoint(char* out, const Vec3& position, const Vec3& normal, char separator);
   void addRow(const Vec3& position, const Vec3& normal, double illuminance, const double* direct,
               std::string_view insideField);
 
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
-  fmt::memory_buffer csv_, res_;
+  fmt::memory_buffer csv_, res_, pts_;
 };
 
 }  // namespace penumbra

@@ -100,6 +100,7 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
     }
     names.push_back(stem + ".csv");
     names.push_back(stem + ".res");
+    names.push_back(stem + ".pts");
   }
   names.push_back("summary.json");
   return names;
@@ -124,6 +125,18 @@ void writeGridCsv(std::ostream& out, const GridReport& grid) {
     }
   }
   out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
+}
+
+void writeGridPts(std::ostream& out, const GridReport& grid) {
+  GridRows rows;
+  for (const SamplePoint& point : grid.points) {
+    rows.addPoint(point.position, point.normal);
+    if (rows.pts().size() > (1u << 20)) {
+      out.write(rows.pts().data(), static_cast<std::streamsize>(rows.pts().size()));
+      rows.clear();
+    }
+  }
+  out.write(rows.pts().data(), static_cast<std::streamsize>(rows.pts().size()));
 }
 
 void writeGridRes(std::ostream& out, const GridReport& grid) {
@@ -187,6 +200,7 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"name", grid.name},
         {"csv", stem + ".csv"},
         {"res", stem + ".res"},
+        {"pts", stem + ".pts"},
         {"kind", gridKindName(grid.kind)},
         {"columns",
          grid.kind == GridKind::Points ? nlohmann::json(nullptr) : nlohmann::json(grid.columns)},
@@ -245,6 +259,7 @@ void writeResultFiles(const RunReport& report, const std::filesystem::path& dire
     const std::string stem = gridFileStem(grid.name);
     writeFile(directory / (stem + ".csv"), [&](std::ostream& out) { writeGridCsv(out, grid); });
     writeFile(directory / (stem + ".res"), [&](std::ostream& out) { writeGridRes(out, grid); });
+    writeFile(directory / (stem + ".pts"), [&](std::ostream& out) { writeGridPts(out, grid); });
   }
   writeSummaryFile(report, directory);
 }

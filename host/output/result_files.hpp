@@ -39,6 +39,7 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
 
 void writeGridCsv(std::ostream& out, const GridReport& grid);
 void writeGridRes(std::ostream& out, const GridReport& grid);
+void writeGridPts(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
 // What E includes, in words: "total (direct + interreflected)" or "direct only".
 std::string illuminanceMeaning(const RunReport& report);

@@ -24,8 +24,17 @@ std::string ratio(double u) {
   return std::isfinite(u) ? fmt::format("{:.3f}", u) : kUndefined;
 }
 
-std::string spacing(double s) {
-  return s > 0.0 ? fmt::format("{:.3g}", s) : kUndefined;
+// Both distances between points of a planar grid, along u and along v: "0.5 × 0.48".
+std::string spacing(const GridReport& grid) {
+  if (grid.spacingU > 0.0) return fmt::format("{:.3g} × {:.3g}", grid.spacingU, grid.spacingV);
+  return grid.metrics.spacing > 0.0 ? fmt::format("{:.3g}", grid.metrics.spacing) : kUndefined;
+}
+
+// The terminal columns `text` takes: its UTF-8 code points ("×" is one), as fmt pads.
+std::size_t columnsOf(const std::string& text) {
+  return static_cast<std::size_t>(std::count_if(text.begin(), text.end(), [](char c) {
+    return (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  }));
 }
 
 }  // namespace
@@ -48,16 +57,15 @@ std::string summaryTable(const RunReport& report) {
     const GridMetrics& m = grid.metrics;
     // Uniformity is a property of an area; scattered sensors have none.
     const bool area = grid.kind != GridKind::Points;
-    rows.push_back({grid.name, fmt::format("{}", m.points), spacing(m.spacing), lux(m.eAvg),
-                    lux(m.eMin), lux(m.eMax), area ? ratio(m.u0) : kUndefined,
-                    area ? ratio(m.ud) : kUndefined});
+    rows.push_back({grid.name, fmt::format("{}", m.points), spacing(grid), lux(m.eAvg), lux(m.eMin),
+                    lux(m.eMax), area ? ratio(m.u0) : kUndefined, area ? ratio(m.ud) : kUndefined});
     if (withDirect) {
       rows.back().push_back(grid.directMetrics ? lux(grid.directMetrics->eAvg) : kUndefined);
     }
   }
   std::vector<std::size_t> width(rows.front().size(), 0);
   for (const Row& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], row[c].size());
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], columnsOf(row[c]));
   }
   std::string table =
       fmt::format("E: {}\n", report.interreflection ? "total illuminance (direct + interreflected)"

@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
 
+#include "geometry/fnv1a_hash.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 
@@ -35,6 +37,31 @@ void replaceFolder(const fs::path& folder, const std::function<void(const fs::pa
   StagedDirectory staged(target);
   fill(staged.staging());
   staged.commit();
+}
+
+// Beside the charts: which data each PNG shows.
+constexpr const char* kDrawnCharts = "charts.json";
+
+std::string chartFingerprint(const LineChart& chart) {
+  Fnv1a h;
+  h.add(std::string_view("penumbra chart 1"));
+  for (const std::string& text : {chart.title, chart.xLabel, chart.yLabel}) h.add(text);
+  h.add(static_cast<double>(chart.width));
+  h.add(static_cast<double>(chart.height));
+  for (const ChartSeries& series : chart.series) {
+    h.add(std::string_view(series.name));
+    for (double x : series.x) h.add(x);
+    h.add(std::string_view("y"));
+    for (double y : series.y) h.add(y);
+  }
+  return h.hex();
+}
+
+// {} when there is no such file or it is not JSON: every chart is then drawn again.
+nlohmann::json readDrawnCharts(const fs::path& file) {
+  std::ifstream in(file);
+  nlohmann::json drawn = nlohmann::json::parse(in, nullptr, false);
+  return drawn.is_object() ? drawn : nlohmann::json::object();
 }
 
 }  // namespace
@@ -78,11 +105,42 @@ void writeTextFiles(const fs::path& out,
   staged.commit();
 }
 
-void writeCharts(const fs::path& directory, const std::vector<ChartFile>& charts,
-                 const ChartWriter& writer) {
+ChartsWritten writeCharts(const fs::path& directory, const std::vector<ChartFile>& charts,
+                          const ChartWriter& writer) {
+  const nlohmann::json previous = readDrawnCharts(directory / kDrawnCharts);
+  nlohmann::ordered_json drawn = nlohmann::ordered_json::object();
+  std::vector<ChartFile> toDraw;
+  ChartsWritten written;
+  for (const ChartFile& c : charts) {
+    const std::string fingerprint = chartFingerprint(c.chart);
+    if (fs::exists(directory / c.fileName) && previous.value(c.fileName, "") == fingerprint) {
+      drawn[c.fileName] = fingerprint;
+      ++written.kept;
+    } else {
+      toDraw.push_back(c);
+    }
+  }
   StagedDirectory staged(directory);
-  for (const ChartFile& c : charts) writer(c.chart, staged.staging() / c.fileName);
+  if (!toDraw.empty()) {
+    try {
+      writer.draw(toDraw, staged.staging());
+    } catch (const std::exception& e) {
+      written.why = e.what();
+    }
+  }
+  for (const ChartFile& c : toDraw) {
+    if (fs::exists(staged.staging() / c.fileName)) {
+      drawn[c.fileName] = chartFingerprint(c.chart);
+      ++written.drawn;
+    } else {
+      written.missing.push_back(c.fileName);
+    }
+  }
+  if (!written.missing.empty() && written.why.empty()) written.why = "the chart writer wrote none";
+  writeFile(staged.staging() / kDrawnCharts,
+            [&](std::ostream& out) { out << drawn.dump(2) << "\n"; });
   staged.commit();
+  return written;
 }
 
 }  // namespace penumbra

@@ -18,12 +18,27 @@
 
 namespace penumbra {
 
-// Draws one chart into a PNG file (viz::writeLineChart when the binary has viz/).
-using ChartWriter = std::function<void(const LineChart& chart, const std::filesystem::path& png)>;
-
 struct ChartFile {
   LineChart chart;
   std::string fileName;  // in OUT/charts
+};
+
+// Draws a batch of charts, each into `directory` / fileName (viz::writeLineChart in a child
+// process when the binary has viz/). May throw, or stop halfway: the files that are there count.
+using ChartDrawing = std::function<void(const std::vector<ChartFile>& charts,
+                                        const std::filesystem::path& directory)>;
+
+struct ChartWriter {
+  ChartDrawing draw;        // empty: this binary draws no charts (built without viz/)
+  std::string unavailable;  // why charts cannot be drawn on this machine (no display), or ""
+  explicit operator bool() const { return static_cast<bool>(draw); }
+};
+
+struct ChartsWritten {
+  std::size_t drawn = 0;             // by this call
+  std::size_t kept = 0;              // already there, showing the same data
+  std::vector<std::string> missing;  // file names the writer did not draw
+  std::string why;                   // the writer's error, when some are missing
 };
 
 // Writes one finished case into `folder` (OUT/cases/<id>): the files `penumbra grid` writes, then
@@ -43,8 +58,12 @@ void copyCaseFolder(const std::filesystem::path& from, const std::filesystem::pa
 void writeTextFiles(const std::filesystem::path& out,
                     const std::vector<std::pair<std::string, std::string>>& files);
 
-// Draws every chart into `directory` with `writer`, staged, then renamed into place.
-void writeCharts(const std::filesystem::path& directory, const std::vector<ChartFile>& charts,
-                 const ChartWriter& writer);
+// The charts in `directory`: a PNG that is there and shows the same data (charts.json beside them
+// records a fingerprint of each chart's data) is kept; the others are drawn with `writer` into a
+// staging folder and renamed into place. A writer that fails halfway costs only the charts it did
+// not draw: those drawn are kept, the rest named in `missing`, so that the next call draws only
+// them.
+ChartsWritten writeCharts(const std::filesystem::path& directory,
+                          const std::vector<ChartFile>& charts, const ChartWriter& writer);
 
 }  // namespace penumbra

@@ -18,6 +18,7 @@ nlohmann::json toneMapStatsJson(const ToneMapStats& s) {
   return {
       {"method", s.method},
       {"black", s.black},
+      {"white_cdm2", s.white},
       {"weights", {{"strong", s.strong}, {"medium", s.medium}, {"weak", s.weak}}},
       {"lattice_px", s.lattice},
       {"width", s.width},
@@ -54,6 +55,7 @@ ImageMetadata toneMapPngMetadata(const ToneMapStats& s) {
       {"penumbra:black", fmt::format("{}", s.black)},
       {"penumbra:weights", fmt::format("strong={} medium={} weak={}", s.strong, s.medium, s.weak)},
       {"penumbra:lattice", fmt::format("{}", s.lattice)},
+      {"penumbra:white", fmt::format("{} cd/m2", s.white)},
   };
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -43,6 +44,44 @@ int lastTabIndentedLine(const std::string& text, int lastLine) {
     }
   }
   return found;
+}
+
+struct OpenBracket {
+  int line = 0;  // 1-based; 0 when none is open
+  char bracket = 0;
+};
+
+// The innermost '{' or '[' still open at (line, column), both 1-based: where a flow map or list
+// that misses its '}' or ']' starts. Quoted text and comments are skipped.
+OpenBracket unclosedBracket(const std::string& text, int line, int column) {
+  std::vector<OpenBracket> open;  // the brackets open so far
+  int at = 1, col = 0;
+  char quote = 0;
+  bool comment = false;
+  char previous = '\n';
+  for (char c : text) {
+    ++col;
+    if (at > line || (at == line && col >= column)) break;
+    if (c == '\n') {
+      ++at;
+      col = 0;
+      comment = false;
+      quote = 0;  // a quoted scalar that runs over lines is rare in a scene; start afresh
+    } else if (comment) {
+    } else if (quote != 0) {
+      if (c == quote) quote = 0;
+    } else if (c == '\'' || c == '"') {
+      quote = c;
+    } else if (c == '#' && (previous == ' ' || previous == '\t' || previous == '\n')) {
+      comment = true;
+    } else if (c == '{' || c == '[') {
+      open.push_back({at, c});
+    } else if ((c == '}' || c == ']') && !open.empty()) {
+      open.pop_back();
+    }
+    previous = c;
+  }
+  return open.empty() ? OpenBracket{} : open.back();
 }
 
 std::string joined(const std::vector<std::string_view>& words) {
@@ -86,6 +125,15 @@ YAML::Node parseYaml(const std::string& text, const std::filesystem::path& file)
                        "this line is indented with a tab, and YAML does not allow tabs in "
                        "indentation: indent with spaces (the YAML parser says: " +
                            e.msg + ")");
+    }
+    // A flow map or list without its '}' or ']' is noticed on a later line (the next key or list
+    // item); the line to fix is the one that opened it.
+    if (const OpenBracket open = unclosedBracket(text, line, e.mark.column + 1);
+        open.line > 0 && open.line < line) {
+      throw SceneError(file, open.line, "",
+                       fmt::format("this is not valid YAML: the '{}' opened on this line is not "
+                                   "closed with '{}' (the YAML parser says: {})",
+                                   open.bracket, open.bracket == '{' ? '}' : ']', e.msg));
     }
     throw SceneError(file, line, "", "this is not valid YAML: " + e.msg);
   }

@@ -58,7 +58,7 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
       }
     }
   }
-  return fmt::format("{:016x}", h.value());
+  return h.hex();
 }
 
 }  // namespace penumbra

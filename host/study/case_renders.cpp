@@ -2,22 +2,53 @@
 
 #include <fmt/format.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
+#include <fstream>
 #include <stdexcept>
 
 #include "output/render_files.hpp"
+#include "output/sweep_files.hpp"
 #include "study/study.hpp"
 #include "tonemap/tone_map.hpp"
 
 namespace penumbra {
 
 CaseRenders::CaseRenders(std::vector<std::string> views, EstimatorOptions estimator,
-                         ToneMapOptions display)
-    : views_(std::move(views)), estimator_(std::move(estimator)), display_(display) {}
+                         std::string exposure, std::filesystem::path output)
+    : views_(std::move(views)),
+      estimator_(std::move(estimator)),
+      exposureText_(std::move(exposure)),
+      exposure_(parseRenderExposure(exposureText_)),
+      output_(std::move(output)) {
+  if (exposure_.fixed()) display_.method = DisplayMethod::Clip;
+  display_.white = exposure_.white;
+  if (exposure_.autoFirst) {
+    // A white chosen by an earlier run into this folder.
+    std::ifstream in(output_ / kExposureJson);
+    const nlohmann::json kept = nlohmann::json::parse(in, nullptr, false);
+    if (kept.is_object() && kept.value("white_cdm2", 0.0) > 0) display_.white = kept["white_cdm2"];
+  }
+}
 CaseRenders::~CaseRenders() = default;
 
 std::string CaseRenders::name() const {
-  return renderOutputName(views_);
+  return renderOutputName(views_, exposureText_);
+}
+
+ToneMapOptions CaseRenders::displayFor(const RenderedView& rendered) {
+  if (!exposure_.autoFirst || display_.white > 0) return display_;
+  ToneMapOptions automatic = display_;  // clip with its automatic exposure: the white it chose
+  ToneMapStats stats;
+  displayValues(rendered.luminance, rendered.faces, automatic, &stats);
+  display_.white = stats.white;
+  writeTextFiles(
+      output_,
+      {{kExposureJson,
+        nlohmann::json{{"exposure", "auto-first"}, {"white_cdm2", display_.white}}.dump(2) +
+            "\n"}});
+  return display_;
 }
 
 std::vector<std::string> CaseRenders::write(const Scene& scene, const RunReport& report,
@@ -49,7 +80,8 @@ std::vector<std::string> CaseRenders::write(const Scene& scene, const RunReport&
     }
     RenderedView rendered = renderer_->render(*view, RenderOptions{1, 1, {}});
     ToneMapStats stats;
-    DisplayImage display = toneMap(rendered.luminance, rendered.faces, display_, &stats);
+    DisplayImage display =
+        toneMap(rendered.luminance, rendered.faces, displayFor(rendered), &stats);
     renders.views.push_back({std::move(rendered), std::move(display), stats});
   }
   return writeRenderFiles(renders, directory);

@@ -10,16 +10,23 @@
 #include "illuminance/estimator.hpp"
 #include "output/case_output.hpp"
 #include "render/renderer.hpp"
+#include "study/render_exposure.hpp"
 #include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
+
+// Where auto-first keeps the white it chose (OUT/exposure.json), so that a rerun or --resume
+// exposes the cases it adds as the first ones were.
+inline constexpr const char* kExposureJson = "exposure.json";
 
 class CaseRenders : public CaseOutputWriter {
  public:
   // The device as --device takes it (opened at the first case and kept), culling, and whether
   // the images include the interreflected light, on which mesh, as the sweep's grids do.
-  CaseRenders(std::vector<std::string> views, EstimatorOptions estimator,
-              ToneMapOptions display = {});
+  // `exposure` as `sweep --exposure` takes it (render_exposure.hpp); `output` is the sweep's
+  // folder (where auto-first keeps its white).
+  CaseRenders(std::vector<std::string> views, EstimatorOptions estimator, std::string exposure = "",
+              std::filesystem::path output = {});
   ~CaseRenders() override;
 
   std::string name() const override;
@@ -28,8 +35,15 @@ class CaseRenders : public CaseOutputWriter {
                                  const std::filesystem::path& directory) override;
 
  private:
+  // The display of this case's views: the study's white, chosen from `rendered` (the first
+  // view) when auto-first has none yet.
+  ToneMapOptions displayFor(const RenderedView& rendered);
+
   std::vector<std::string> views_;
   EstimatorOptions estimator_;
+  std::string exposureText_;
+  RenderExposure exposure_;
+  std::filesystem::path output_;
   ToneMapOptions display_;
   std::unique_ptr<compute::Device> device_;
   std::unique_ptr<Renderer> renderer_;

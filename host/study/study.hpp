@@ -34,14 +34,19 @@ struct Study {
   bool plots = false;                // per-case plots (what `penumbra grid --plot` draws)
   bool charts = true;                // a chart of each metric against each varied parameter
   std::vector<std::string> renders;  // views of the scene to render per case; empty: none
+  // The renders' exposure (`sweep --exposure`): "" each case on its own, a white in cd/m², or
+  // "auto-first".
+  std::string renderExposure;
 };
 
-// The name of the render output for `views` ("renders:from-door,plan"): the views are part of
-// the name, so a case rendered with other views is not finished for this study.
-inline std::string renderOutputName(const std::vector<std::string>& views) {
+// The name of the render output for `views` ("renders:from-door,plan", "renders:plan
+// exposure=200"): the views and the exposure are part of the name, so a case rendered with other
+// views or another exposure is not finished for this study.
+inline std::string renderOutputName(const std::vector<std::string>& views,
+                                    const std::string& exposure) {
   std::string name = "renders:";
   for (std::size_t i = 0; i < views.size(); ++i) name += (i ? "," : "") + views[i];
-  return name;
+  return exposure.empty() ? name : name + " exposure=" + exposure;
 }
 
 // The per-case outputs the study asks for, by the names of their writers (case_output.hpp):
@@ -49,7 +54,8 @@ inline std::string renderOutputName(const std::vector<std::string>& views) {
 inline std::vector<std::string> requestedCaseOutputs(const Study& study) {
   std::vector<std::string> names;
   if (study.plots) names.push_back("plots");
-  if (!study.renders.empty()) names.push_back(renderOutputName(study.renders));
+  if (!study.renders.empty())
+    names.push_back(renderOutputName(study.renders, study.renderExposure));
   return names;
 }
 

@@ -45,18 +45,22 @@ TableSummary writeStudyTables(const fs::path& out, const StudyLayout& layout,
     summary.chartsNote = "the study says charts: false";
   } else if (!chartWriter) {
     summary.chartsNote = "this penumbra was built without charts (viz/)";
+  } else if (!chartWriter.unavailable.empty()) {
+    summary.chartsNote = chartWriter.unavailable;
   } else if (!summary.missing.empty()) {
     summary.chartsNote =
         fmt::format("charts are drawn once all {} cases are finished", layout.cases.size());
   } else {
     const std::vector<ChartFile> charts = studyCharts(layout, records);
-    if (charts.empty()) summary.chartsNote = "no parameter takes more than one value";
-    try {
-      if (!charts.empty()) writeCharts(out / "charts", charts, chartWriter);
-      summary.charts = charts.size();
-    } catch (const std::exception& e) {
-      // The tables are written; charts are a view of them and can be drawn again by a rerun.
-      summary.chartsNote = std::string("they could not be drawn: ") + e.what();
+    if (charts.empty()) {
+      summary.chartsNote = "no parameter takes more than one value";
+    } else {
+      // The tables are written first; charts are a view of them, and a rerun draws what is missing.
+      ChartsWritten written = writeCharts(out / "charts", charts, chartWriter);
+      summary.charts = written.drawn + written.kept;
+      summary.chartsMissing = std::move(written.missing);
+      summary.chartsError = std::move(written.why);
+      if (summary.charts == 0) summary.chartsNote = "they could not be drawn";
     }
   }
   return summary;

@@ -43,8 +43,12 @@ struct SweepSettings {
 struct TableSummary {
   std::size_t rows = 0;              // finished cases in results.csv
   std::vector<std::string> missing;  // cases not finished in OUT (other shards', or killed)
-  std::size_t charts = 0;            // charts drawn
+  std::size_t charts = 0;            // charts in OUT/charts, drawn now or kept
   std::string chartsNote;            // why there are none, when there are none
+  // Charts that could not be drawn (the tables are written all the same) and why: the command
+  // then fails, and a rerun draws only these.
+  std::vector<std::string> chartsMissing;
+  std::string chartsError;
 };
 
 struct SweepSummary {

@@ -13,7 +13,7 @@ ScalarImage linearDisplayValues(const DisplaySpaces& spaces) {
   return display;
 }
 
-ScalarImage clipDisplayValues(const DisplaySpaces& spaces, const RegionMap& regions) {
+double automaticWhite(const DisplaySpaces& spaces, const RegionMap& regions) {
   // Log average over lit surface pixels; 1e-4 of the brightest keeps an umbra (V = 0) from
   // dragging the average to zero.
   const double floor = std::max(spaces.maxRgb, 1e-30) * 1e-4;
@@ -25,7 +25,11 @@ ScalarImage clipDisplayValues(const DisplaySpaces& spaces, const RegionMap& regi
     ++counted;
   }
   const double average = counted ? std::exp(logSum / counted) : 1.0;
-  const double exposure = 0.18 / average;
+  return average / 0.18;
+}
+
+ScalarImage clipDisplayValues(const DisplaySpaces& spaces, double white) {
+  const double exposure = 1.0 / white;
   ScalarImage display(spaces.width, spaces.height);
   for (size_t i = 0; i < spaces.value0.size(); ++i) {
     display.values[i] = boundedDisplayValue(exposure * spaces.value0[i], spaces.lowerBound);

@@ -22,6 +22,13 @@ void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOpt
     throw std::invalid_argument("the face-id image is not the size of the HDR image");
   }
   if (options.lattice < 1) throw std::invalid_argument("--lattice must be at least 1 pixel");
+  if (!(options.white >= 0) || !std::isfinite(options.white)) {
+    throw std::invalid_argument("--exposure: white must be a luminance above 0 cd/m2");
+  }
+  if (options.white > 0 && options.method != DisplayMethod::Clip) {
+    throw std::invalid_argument(
+        "a fixed exposure (--exposure) is a clip display: the other maps adapt to each picture");
+  }
   if (!(options.strong > 0 && options.medium > 0 && options.weak > 0)) {
     throw std::invalid_argument("the constraint weights must be positive");
   }
@@ -115,7 +122,8 @@ ScalarImage displayValuesIn(const DisplaySpaces& spaces, const FaceIdImage& face
   s.regions = regions.count;
   switch (options.method) {
     case DisplayMethod::Clip:
-      return clipDisplayValues(spaces, regions);
+      s.white = options.white > 0 ? options.white : automaticWhite(spaces, regions);
+      return clipDisplayValues(spaces, s.white);
     case DisplayMethod::Linear:
       return linearDisplayValues(spaces);
     case DisplayMethod::Constraint:

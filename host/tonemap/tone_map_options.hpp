@@ -27,6 +27,9 @@ struct ToneMapOptions {
   double weak = 0.1;
   // Largest spacing in pixels between the vertices of a region (interior lattice and boundary).
   int lattice = 8;
+  // clip only: the luminance shown as white, cd/m² (a fixed exposure: the same cd/m² gives the
+  // same display value in every picture). 0: automatic, from each picture's own log average.
+  double white = 0;
 };
 
 struct ToneMapStats {
@@ -34,6 +37,7 @@ struct ToneMapStats {
   double black = 0;
   double strong = 0, medium = 0, weak = 0;
   int lattice = 0;
+  double white = 0;  // clip: the luminance shown as white, cd/m², fixed or automatic; 0 otherwise
   int width = 0, height = 0;
   int regions = 0;    // connected visible parts of faces
   int variables = 0;  // vertices, one V each
