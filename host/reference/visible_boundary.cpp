@@ -51,7 +51,18 @@ Polygon2 convexHull(std::vector<Vec2> p) {
     --k;  // the last point of each chain starts the other
   }
   hull.resize(k);
-  return hull.size() >= 3 ? hull : Polygon2{};
+  // Projections of one vertex along two edges can differ by rounding (1e-16); the chain keeps
+  // both when their cross product rounds positive, and an edge that short has no reliable
+  // direction for the inside tests. Vertices within 1e-12 of the hull's extent of the previous
+  // one are one vertex.
+  double extent = 0.0;
+  for (const Vec2& x : hull) extent = std::max(extent, (x - hull[0]).norm());
+  Polygon2 merged;
+  for (const Vec2& x : hull)
+    if (merged.empty() || (x - merged.back()).norm() > 1e-12 * extent) merged.push_back(x);
+  while (merged.size() > 1 && (merged.back() - merged.front()).norm() <= 1e-12 * extent)
+    merged.pop_back();
+  return merged.size() >= 3 ? merged : Polygon2{};
 }
 
 // Signed distance of x from edge i of q, positive inside.
