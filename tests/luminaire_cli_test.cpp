@@ -7,6 +7,8 @@
 #include <initializer_list>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "penumbra_process.hpp"
 #include "test_files.hpp"
 
@@ -79,6 +81,55 @@ TEST(LuminaireCommand, HelpExplainsTheLines) {
                            "docs/photometry.md", "Exit status"}) {
     EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
   }
+}
+
+// A scene with one luminaire of the area model: `--reference` evaluates it and summary.json
+// lists its model and fit; a device run stops with a message naming --reference.
+void writeAreaScene(const fs::path& dir) {
+  std::ofstream(dir / "scene.yaml") << "penumbra: 1\n"
+                                       "luminaires:\n"
+                                       "  - name: panel\n"
+                                       "    file: '" +
+                                           (kExamples / "lambertian-panel.ldt").string() +
+                                           "'\n"
+                                           "    position: [1, 1, 2.9]\n"
+                                           "    model: area\n"
+                                           "  - name: washer\n"
+                                           "    file: '" +
+                                           (kExamples / "asymmetric-wallwasher.ies").string() +
+                                           "'\n"
+                                           "    position: [2, 1, 2.9]\n"
+                                           "    model: area\n"
+                                           "grids:\n"
+                                           "  - {name: floor, rect: {origin: [0, 0, 0], u: [2, 0, "
+                                           "0], v: [0, 2, 0]}, spacing: 0.5}\n";
+}
+
+TEST(LuminaireAreaModel, TheReferenceRunsItAndTheSummaryListsTheFit) {
+  TempDir dir("luminaire-cli");
+  writeAreaScene(dir.path());
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --reference -q");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ifstream in(dir.path() / "out" / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  const nlohmann::json& panel = summary.at("luminaires").at(0);
+  EXPECT_EQ(panel.at("model"), "area");
+  EXPECT_EQ(panel.at("fit_order"), 0);
+  EXPECT_LT(panel.at("fit_error").get<double>(), 1e-3);
+  EXPECT_EQ(panel.at("parts"), nlohmann::json::array({1, 1}));
+  // The wall-washer's lobe is not symmetric about its nadir: split into cells.
+  const nlohmann::json& washer = summary.at("luminaires").at(1);
+  EXPECT_GT(washer.at("fit_error").get<double>(), 0.01);
+  EXPECT_EQ(washer.at("parts"), nlohmann::json::array({3, 3}));
+}
+
+TEST(LuminaireAreaModel, ADeviceRunSaysToUseTheReference) {
+  TempDir dir("luminaire-cli");
+  writeAreaScene(dir.path());
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --device cpu -q");
+  EXPECT_NE(r.status, 0);
+  EXPECT_TRUE(contains(r.err, "the area model is evaluated by the host reference (--reference)"))
+      << r.err;
 }
 
 }  // namespace

@@ -4,8 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
+#include "photometry_files.hpp"
 #include "reference/luminaire_illuminance.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_errors.hpp"
@@ -128,13 +130,36 @@ TEST(LuminaireScene, ANegativeMaintenanceFactorIsAnError) {
       4, "luminaires[0].maintenance_factor", "(0, 1]");
 }
 
-TEST(LuminaireScene, TheAreaModelIsNotAvailableYet) {
-  expectError(
-      "  - name: d\n"
-      "    file: luminaires/narrow-downlight.ies\n"
-      "    position: [0, 0, 3]\n"
-      "    model: area\n",
-      7, "luminaires[0].model", "use 'model: point'");
+TEST(LuminaireScene, TheAreaModelTakesTheFilesOpeningAndFitsItsLuminance) {
+  const Scene scene = parseScene(sceneWith("  - name: panel\n"
+                                           "    file: luminaires/lambertian-panel.ldt\n"
+                                           "    position: [1, 1, 2.9]\n"
+                                           "    model: area\n"),
+                                 kDataScene);
+  const Luminaire& l = scene.luminaires.front();
+  EXPECT_EQ(l.model, LuminaireModel::Area);
+  ASSERT_TRUE(l.opening.has_value());
+  EXPECT_EQ(l.opening->outline.size(), 4u);  // the 600 × 600 mm rectangle
+  EXPECT_NEAR(l.opening->fit.openingAreaM2, 0.36, 1e-12);
+  EXPECT_EQ(l.opening->fit.order(), 0);
+  EXPECT_FALSE(l.opening->subdivided());
+}
+
+TEST(LuminaireScene, TheAreaModelNeedsAFlatOpening) {
+  testing::TempDir dir("luminaire-scene");
+  photometry::testfiles::IesSpec point;  // width, length and height 0: a point
+  point.vertical = photometry::testfiles::steps(0, 90, 10);
+  point.horizontal = {0};
+  point.candela = [](double, double) { return 100.0; };
+  std::ofstream(dir.path() / "point.ies") << photometry::testfiles::iesText(point);
+  const SceneError e = errorOf(sceneWith("  - name: p\n"
+                                         "    file: point.ies\n"
+                                         "    position: [0, 0, 3]\n"
+                                         "    model: area\n"),
+                               dir.path() / "scene.yaml");
+  EXPECT_EQ(e.line(), 7) << e.what();
+  EXPECT_EQ(e.key(), "luminaires[0].model") << e.what();
+  EXPECT_NE(std::string(e.what()).find("no flat luminous opening"), std::string::npos) << e.what();
 }
 
 TEST(LuminaireScene, ArraysNeedWholeCountsAndPositiveSpacings) {

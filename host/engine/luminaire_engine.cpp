@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "cl/buffer.hpp"
 #include "engine/kernel_scene.hpp"
@@ -38,6 +39,14 @@ LuminaireEngine::~LuminaireEngine() = default;
 void LuminaireEngine::setScene(const Scene& scene, const Vec3& origin, float epsLength) {
   State& s = *state_;
   compute::Device& d = *s.device;
+  for (const Luminaire& luminaire : scene.luminaires) {
+    if (luminaire.model != LuminaireModel::Point) {
+      throw std::runtime_error(fmt::format(
+          "luminaire '{}': the area model is evaluated by the host reference (--reference); the "
+          "device evaluates the point model ('model: point')",
+          luminaire.name));
+    }
+  }
   const LuminaireKernelScene packed = packLuminaires(scene, origin);
   const std::vector<std::size_t> tables = {
       compute::byteSize(packed.luminaires), compute::byteSize(packed.tables),

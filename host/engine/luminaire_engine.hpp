@@ -21,6 +21,8 @@ class LuminaireEngine {
 
   // Uploads the luminaires and solids of `scene`, positions relative to `origin`, with the
   // kernel's absolute length tolerance `epsLength` (m), both as the illuminance kernel has them.
+  // Throws std::runtime_error for a luminaire of the area model, which only the host reference
+  // evaluates (reference/opening_illuminance.hpp).
   void setScene(const Scene& scene, const Vec3& origin, float epsLength);
 
   struct Result {

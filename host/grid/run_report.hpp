@@ -44,7 +44,14 @@ struct LuminaireReport {
   double lampLumens = 0.0;   // lm per instance, after the flux override (0: absolute photometry)
   double zonalFluxLm = 0.0;  // lm per instance from the table, before the maintenance factor
   double maintenanceFactor = 1.0;
-  std::string model;  // "point"
+  std::string model;  // "point", "area"
+  // The area model's luminance fit (photometry/luminance_fit.hpp): its order, its error at the
+  // table's nodes relative to the peak, and the opening's cells along its length and width
+  // (1 × 1: the fit integrated exactly; more: point sources over the opening, the fit's error
+  // being too large).
+  int fitOrder = -1;  // -1: the point model, no fit
+  double fitError = 0.0;
+  int partsAlongLength = 1, partsAlongWidth = 1;
 };
 
 struct RunReport {

@@ -30,10 +30,21 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
 std::vector<LuminaireReport> luminaireReports(const Scene& scene) {
   std::vector<LuminaireReport> reports;
   for (const Luminaire& l : scene.luminaires) {
-    reports.push_back(LuminaireReport{l.name, l.file.string(), photometry::formatName(l.format),
-                                      static_cast<int>(l.instances.size()), l.lampLumens,
-                                      l.zonalFluxLm(), l.maintenanceFactor,
-                                      luminaireModelName(l.model)});
+    LuminaireReport luminaire{l.name,
+                              l.file.string(),
+                              photometry::formatName(l.format),
+                              static_cast<int>(l.instances.size()),
+                              l.lampLumens,
+                              l.zonalFluxLm(),
+                              l.maintenanceFactor,
+                              luminaireModelName(l.model)};
+    if (l.opening) {
+      luminaire.fitOrder = l.opening->fit.order();
+      luminaire.fitError = l.opening->fit.peakRelativeError;
+      luminaire.partsAlongLength = l.opening->partsAlongLength;
+      luminaire.partsAlongWidth = l.opening->partsAlongWidth;
+    }
+    reports.push_back(std::move(luminaire));
   }
   return reports;
 }

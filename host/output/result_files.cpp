@@ -179,14 +179,22 @@ nlohmann::json interreflectionJson(const InterreflectionReport& r) {
 nlohmann::json luminairesJson(const std::vector<LuminaireReport>& reports) {
   nlohmann::json luminaires = nlohmann::json::array();
   for (const LuminaireReport& l : reports) {
-    luminaires.push_back({{"name", l.name},
-                          {"file", l.file},
-                          {"format", l.format},
-                          {"instances", l.instances},
-                          {"lamp_lumens_lm", number(l.lampLumens)},
-                          {"zonal_flux_lm", number(l.zonalFluxLm)},
-                          {"maintenance_factor", number(l.maintenanceFactor)},
-                          {"model", l.model}});
+    nlohmann::json entry = {{"name", l.name},
+                            {"file", l.file},
+                            {"format", l.format},
+                            {"instances", l.instances},
+                            {"lamp_lumens_lm", number(l.lampLumens)},
+                            {"zonal_flux_lm", number(l.zonalFluxLm)},
+                            {"maintenance_factor", number(l.maintenanceFactor)},
+                            {"model", l.model}};
+    if (l.fitOrder >= 0) {
+      // The area model: the luminance fit's order and error (relative to the peak candela), and
+      // the opening's cells along its length and width ([1, 1]: the fit integrated exactly).
+      entry["fit_order"] = l.fitOrder;
+      entry["fit_error"] = number(l.fitError);
+      entry["parts"] = {l.partsAlongLength, l.partsAlongWidth};
+    }
+    luminaires.push_back(std::move(entry));
   }
   return luminaires;
 }

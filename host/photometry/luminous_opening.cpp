@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace penumbra::photometry {
 namespace {
@@ -80,6 +81,31 @@ LuminousOpening openingFromEulumdat(double lengthMm, double widthMm, const doubl
         tallest > 0 ? OpeningShape::RectangleWithLuminousSides : OpeningShape::Rectangle;
   }
   return opening;
+}
+
+std::vector<Vec3> flatOutline(const LuminousOpening& opening) {
+  const double a = opening.lengthM / 2, b = opening.widthM / 2;
+  if (a <= 0 || b <= 0) return {};
+  switch (opening.shape) {
+    case OpeningShape::Rectangle:
+      // Clockwise seen from above: the normal points down.
+      return {Vec3(-a, -b, 0), Vec3(-a, b, 0), Vec3(a, b, 0), Vec3(a, -b, 0)};
+    case OpeningShape::Disk:
+    case OpeningShape::Ellipse: {
+      // A regular n-gon inscribed in an ellipse covers n/(2π)·sin(2π/n) of its area.
+      const int n = kRoundOpeningSides;
+      const double step = 2 * std::numbers::pi / n;
+      const double scale = std::sqrt(step / std::sin(step));
+      std::vector<Vec3> outline;
+      for (int i = 0; i < n; ++i) {
+        const double t = -i * step;
+        outline.emplace_back(scale * a * std::cos(t), scale * b * std::sin(t), 0);
+      }
+      return outline;
+    }
+    default:
+      return {};
+  }
 }
 
 }  // namespace penumbra::photometry

@@ -4,7 +4,9 @@
 // length (or diameter) and width (0 for a disk) and its heights at C0, C90, C180 and C270.
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "geometry/vec.hpp"
 #include "photometry/photometric_data.hpp"
 
 namespace penumbra::photometry {
@@ -22,5 +24,13 @@ std::optional<LuminousOpening> openingFromIes(const SignedOpening& dimensions,
 
 // The luminous area of a EULUMDAT file: dimensions in mm, heights at C0, C90, C180, C270.
 LuminousOpening openingFromEulumdat(double lengthMm, double widthMm, const double heightsMm[4]);
+
+// The outline of a flat opening (rectangle, disk, ellipse) in the luminaire's local frame: in the
+// plane z = 0, centred on the photometric centre, ordered so that its right-hand normal is the
+// nadir (−z). A disk or ellipse is the regular kRoundOpeningSides-gon of the same area (its
+// vertices on an ellipse scaled by sqrt(area ratio)). Empty for other shapes and for an opening
+// without area.
+constexpr int kRoundOpeningSides = 32;
+std::vector<Vec3> flatOutline(const LuminousOpening& opening);
 
 }  // namespace penumbra::photometry

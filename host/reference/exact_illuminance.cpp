@@ -1,22 +1,6 @@
 // The exact reference in double (exact_illuminance.hpp says what it is for). Per point P and
-// source face F:
-//
-//  1. F' = F clipped by P's horizon plane, in 2-D coordinates (u, v) of F's plane with
-//     e1 × e2 = F's emission normal, so that F' runs counter-clockwise and, seen from P, the
-//     region lies on the left of its boundary.
-//  2. Each solid's shadow on that plane: the part of the solid between the plane (moved towards
-//     P by the scene tolerance: touching from behind does not block) and the plane through P
-//     parallel to it, projected from P; a convex polygon, the 2-D hull of the projected
-//     vertices. A segment from P to a point of F meets the solid exactly where it meets that
-//     part. Near P's parallel plane projections run off to infinity, so the part is cut at a
-//     depth fraction s_min; the points cut away lie closer to P than half its distance to the
-//     solid, where no segment from P to F' can meet the solid.
-//  3. The visible region V = F' minus the union of the shadows. Every polygon edge is split at
-//     the ends of its overlaps with every other polygon; a piece bounds V when one side of it
-//     (a point a hair off its midpoint) is in V and the other is not, and is then oriented with
-//     V on its left. A piece lying on an earlier polygon's boundary is that polygon's to count
-//     (coincident edges: a reveal flush with a window, two solids side by side).
-//  4. E = L/2 · Σ θ · n·unit(b × a) over the pieces a → b (vectors from P), in double.
+// source face F: the boundary of the part of F that P sees (visible_boundary.hpp), and
+// E = L/2 · Σ θ · n·unit(b × a) over its pieces a → b (vectors from P), in double.
 //
 // Shares no code with kernels/ or the shadow volumes in host/shadow.
 #include "reference/exact_illuminance.hpp"
@@ -24,257 +8,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
-#include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "geometry/tolerance.hpp"
+#include "reference/visible_boundary.hpp"
 
 namespace penumbra {
 namespace {
-
-using Vec2 = Eigen::Vector2d;
-using Polygon2 = std::vector<Vec2>;  // convex, counter-clockwise
-
-double cross2(const Vec2& a, const Vec2& b) {
-  return a.x() * b.y() - a.y() * b.x();
-}
-
-// Andrew's monotone chain; collinear points are dropped.
-Polygon2 convexHull(std::vector<Vec2> p) {
-  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-  });
-  if (p.size() < 3) return {};
-  Polygon2 hull(2 * p.size());
-  std::size_t k = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const std::size_t start = k;
-    for (std::size_t j = 0; j < p.size(); ++j) {
-      const Vec2& q = pass == 0 ? p[j] : p[p.size() - 1 - j];
-      while (k >= start + 2 && cross2(hull[k - 1] - hull[k - 2], q - hull[k - 2]) <= 0.0) --k;
-      hull[k++] = q;
-    }
-    --k;  // the last point of each chain starts the other
-  }
-  hull.resize(k);
-  return hull.size() >= 3 ? hull : Polygon2{};
-}
-
-// Signed distance of x from edge i of q, positive inside.
-double edgeDistance(const Polygon2& q, std::size_t i, const Vec2& x) {
-  const Vec2& a = q[i];
-  const Vec2& b = q[(i + 1) % q.size()];
-  const Vec2 e = b - a;
-  return cross2(e, x - a) / e.norm();
-}
-
-bool inside(const Polygon2& q, const Vec2& x) {
-  for (std::size_t i = 0; i < q.size(); ++i)
-    if (edgeDistance(q, i, x) <= 0.0) return false;
-  return true;
-}
-
-bool onBoundary(const Polygon2& q, const Vec2& x, double within) {
-  double least = 1e300;
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    const double d = edgeDistance(q, i, x);
-    if (d < -within) return false;
-    least = std::min(least, d);
-  }
-  return least <= within;
-}
-
-// The parameters [t0, t1] of a + t·(b − a) inside the closed polygon q; false when none. An end
-// within `slack` outside an edge counts as on it: a shadow edge along a face edge, one rounding
-// off it, must still split that edge where the shadow's own edges meet it.
-bool overlap(const Vec2& a, const Vec2& b, const Polygon2& q, double slack, double& t0,
-             double& t1) {
-  t0 = 0.0;
-  t1 = 1.0;
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    double fa = edgeDistance(q, i, a), fb = edgeDistance(q, i, b);
-    if (fa > -slack) fa = std::max(fa, 0.0);
-    if (fb > -slack) fb = std::max(fb, 0.0);
-    if (fa < 0.0 && fb < 0.0) return false;
-    if (fa < 0.0) t0 = std::max(t0, fa / (fa - fb));
-    if (fb < 0.0) t1 = std::min(t1, fa / (fa - fb));
-  }
-  return t0 <= t1;
-}
-
-struct FaceFrame {
-  Vec3 origin, e1, e2, normal;
-  double offset = 0.0;
-  Vec2 flat(const Vec3& x) const { return Vec2((x - origin).dot(e1), (x - origin).dot(e2)); }
-  Vec3 lift(const Vec2& x) const { return origin + x.x() * e1 + x.y() * e2; }
-};
-
-// The part of the polygon q where a·x <= c (Sutherland-Hodgman; q convex, counter-clockwise).
-Polygon2 clipHalfPlane(const Polygon2& q, const Vec2& a, double c) {
-  Polygon2 out;
-  for (std::size_t i = 0; i < q.size(); ++i) {
-    const Vec2& x = q[i];
-    const Vec2& y = q[(i + 1) % q.size()];
-    const double fx = a.dot(x) - c, fy = a.dot(y) - c;
-    if (fx <= 0.0) out.push_back(x);
-    if ((fx < 0.0 && fy > 0.0) || (fx > 0.0 && fy < 0.0))
-      out.push_back(x + (y - x) * (fx / (fx - fy)));
-  }
-  return out.size() >= 3 ? out : Polygon2{};
-}
-
-// The shadow of `solid` on the face's plane, seen from p at height h above it (2-D, possibly
-// empty). `reach` is the farthest distance from p to the clipped face, `frame` within the square
-// `bound` (2-D, counter-clockwise) around it.
-Polygon2 shadowPolygon(const ConvexPolyhedron& solid, const Vec3& p, double h, double reach,
-                       const FaceFrame& frame, const Polygon2& bound, double tolerance) {
-  const std::vector<Vec3>& v = solid.vertices();
-  double distance = -1e300;  // a lower bound on the distance from p to the solid
-  for (const auto& face : solid.faces())
-    distance = std::max(distance, face.plane.signedDistance(p));
-  if (distance <= tolerance) {
-    // p on the solid's boundary (or inside it): a ray from p enters the solid at once, and is
-    // blocked, iff it points into every face plane through p; a convex solid that a ray does not
-    // enter at once it never enters. The shadow is that cone's section by the face's plane, cut
-    // to the square around the face. Inside, no face plane passes through p: all is shadow.
-    Polygon2 cone = bound;
-    for (const auto& face : solid.faces()) {
-      if (face.plane.signedDistance(p) < -tolerance) continue;
-      const Vec3& m = face.plane.normal;  // m·(x − p) <= 0 for x = origin + u·e1 + v·e2
-      cone = clipHalfPlane(cone, Vec2(m.dot(frame.e1), m.dot(frame.e2)), m.dot(p - frame.origin));
-      if (cone.empty()) break;
-    }
-    return cone;
-  }
-  const double sMin = std::min(0.5, 0.5 * distance / reach);
-  const double dLow = tolerance, dHigh = h * (1.0 - sMin);
-  std::vector<double> d(v.size());
-  for (std::size_t i = 0; i < v.size(); ++i) d[i] = frame.normal.dot(v[i]) - frame.offset;
-  const Vec2 p2 = frame.flat(p);
-  std::vector<Vec2> projected;
-  auto project = [&](const Vec3& y, double depth) {
-    const double k = h / (h - depth);
-    const Vec3 w = y - p;
-    projected.push_back(p2 + k * Vec2(w.dot(frame.e1), w.dot(frame.e2)));
-  };
-  for (const auto& edge : solid.edges()) {
-    const double da = d[edge.from], db = d[edge.to];
-    double t0 = 0.0, t1 = 1.0;
-    if (da == db) {
-      if (da < dLow || da > dHigh) continue;
-    } else {
-      const double tl = (dLow - da) / (db - da), th = (dHigh - da) / (db - da);
-      t0 = std::max(t0, std::min(tl, th));
-      t1 = std::min(t1, std::max(tl, th));
-      if (t0 > t1) continue;
-    }
-    const Vec3& a = v[edge.from];
-    const Vec3 e = v[edge.to] - a;
-    project(a + t0 * e, da + t0 * (db - da));
-    project(a + t1 * e, da + t1 * (db - da));
-  }
-  return convexHull(std::move(projected));
-}
-
-// Whether every point lies strictly beyond the plane {x : normal·x = offset}, by margin.
-bool allBeyond(const Vec3& normal, double offset, const std::vector<Vec3>& points, double margin) {
-  return std::all_of(points.begin(), points.end(),
-                     [&](const Vec3& x) { return normal.dot(x) - offset > margin; });
-}
-
-// The pyramid conv(p, face'): its points and its side planes, outward. Built once per point and
-// face; every solid is tested against it.
-struct Pyramid {
-  std::vector<Vec3> points;
-  std::vector<Plane> sides;
-};
-
-Pyramid pyramidOf(const Vec3& p, const std::vector<Vec3>& face, const Vec3& inward) {
-  Pyramid pyramid{face, {}};
-  pyramid.points.push_back(p);
-  for (std::size_t i = 0; i < face.size(); ++i) {
-    Vec3 m = (face[i] - p).cross(face[(i + 1) % face.size()] - p);
-    if (m.norm() == 0.0) continue;
-    m.normalize();
-    if (m.dot(inward) > 0.0) m = -m;  // outward
-    pyramid.sides.push_back(Plane{m, m.dot(p)});
-  }
-  return pyramid;
-}
-
-// Whether a solid cannot meet the pyramid: a face plane of the solid with the whole pyramid
-// outside it, or a side plane of the pyramid with the whole solid outside it.
-bool separated(const ConvexPolyhedron& solid, const Pyramid& pyramid, double tolerance) {
-  for (const auto& f : solid.faces())
-    if (allBeyond(f.plane.normal, f.plane.offset, pyramid.points, tolerance)) return true;
-  for (const Plane& side : pyramid.sides)
-    if (allBeyond(side.normal, side.offset, solid.vertices(), tolerance)) return true;
-  return false;
-}
-
-// The 2-D bounding box of a polygon: {lo, hi}.
-std::pair<Vec2, Vec2> boundsOf(const Polygon2& q) {
-  Vec2 lo = q[0], hi = lo;
-  for (const Vec2& x : q) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  return {lo, hi};
-}
-
-// Φ = ½ Σ θ n·unit(b × a) over the boundary of the visible region (projected solid angle, sr).
-double visibleProjectedSolidAngle(const Vec3& p, const Vec3& n, const FaceFrame& frame,
-                                  const std::vector<Polygon2>& polygons) {
-  const Polygon2& face = polygons[0];
-  double size = 0.0;
-  for (const Vec2& x : face) size = std::max(size, (x - face[0]).norm());
-  const double hair = 1e-9 * size, coincident = 0.25 * hair;
-  auto visible = [&](const Vec2& x) {
-    if (!inside(face, x)) return false;
-    for (std::size_t k = 1; k < polygons.size(); ++k)
-      if (inside(polygons[k], x)) return false;
-    return true;
-  };
-  double sum = 0.0;
-  std::vector<double> cuts;
-  for (std::size_t j = 0; j < polygons.size(); ++j) {
-    const Polygon2& q = polygons[j];
-    for (std::size_t i = 0; i < q.size(); ++i) {
-      const Vec2& a = q[i];
-      const Vec2& b = q[(i + 1) % q.size()];
-      const double length = (b - a).norm();
-      if (length <= 0.0) continue;
-      cuts.assign({0.0, 1.0});
-      for (std::size_t k = 0; k < polygons.size(); ++k) {
-        double t0, t1;
-        if (k == j || !overlap(a, b, polygons[k], coincident, t0, t1)) continue;
-        cuts.push_back(t0);
-        cuts.push_back(t1);
-      }
-      std::sort(cuts.begin(), cuts.end());
-      const Vec2 along = (b - a) / length;
-      const Vec2 left(-along.y(), along.x());
-      for (std::size_t c = 0; c + 1 < cuts.size(); ++c) {
-        if (cuts[c + 1] - cuts[c] <= 0.0) continue;
-        const Vec2 mid = a + 0.5 * (cuts[c] + cuts[c + 1]) * (b - a);
-        bool earlier = false;
-        for (std::size_t k = 0; k < j && !earlier; ++k)
-          earlier = onBoundary(polygons[k], mid, coincident);
-        if (earlier) continue;
-        const bool l = visible(mid + hair * left), r = visible(mid - hair * left);
-        if (l == r) continue;
-        Vec3 from = frame.lift(a + cuts[c] * (b - a)) - p;
-        Vec3 to = frame.lift(a + cuts[c + 1] * (b - a)) - p;
-        if (!l) std::swap(from, to);
-        const Vec3 m = to.cross(from);
-        const double s = m.norm();
-        if (s > 0.0) sum += std::atan2(s, from.dot(to)) * n.dot(m) / s;
-      }
-    }
-  }
-  return 0.5 * sum;
-}
 
 struct ExactFace {
   int source = 0;
@@ -285,38 +25,14 @@ struct ExactFace {
 
 double faceIlluminance(const ExactFace& face, const SamplePoint& point, const Scene& scene,
                        double tolerance) {
-  const Vec3& p = point.position;
   const Vec3 n = point.normal.normalized();
-  const double h = face.frame.normal.dot(p) - face.frame.offset;
-  if (h <= tolerance) return 0.0;
-  // The horizon: keep n·(x − p) >= 0.
-  const ConvexPolygon lit = face.polygon.clipped(Plane{-n, -n.dot(p)}, 0.0);
-  if (lit.empty()) return 0.0;
-  std::vector<Polygon2> polygons(1);
-  double reach = 0.0;
-  Vec3 centre = Vec3::Zero();
-  for (const Vec3& x : lit.vertices()) {
-    polygons[0].push_back(face.frame.flat(x));
-    reach = std::max(reach, (x - p).norm());
-    centre += x / static_cast<double>(lit.size());
+  double sum = 0.0;
+  for (const VisibleArc& arc : visibleBoundary(face.polygon, face.frame, point, scene, tolerance)) {
+    const Vec3 m = arc.to.cross(arc.from);
+    const double s = m.norm();
+    if (s > 0.0) sum += std::atan2(s, arc.from.dot(arc.to)) * n.dot(m) / s;
   }
-  if (polygons[0].size() < 3) return 0.0;
-  const Pyramid pyramid = pyramidOf(p, lit.vertices(), centre - p);
-  const auto [lo, hi] = boundsOf(polygons[0]);
-  const Vec2 margin = hi - lo;
-  const Polygon2 bound = {lo - margin, Vec2(hi.x() + margin.x(), lo.y() - margin.y()), hi + margin,
-                          Vec2(lo.x() - margin.x(), hi.y() + margin.y())};
-  for (int s = 0; s < static_cast<int>(scene.solids.size()); ++s) {
-    const ConvexPolyhedron& solid = scene.solids[s].shape;
-    if (s == point.solid || solid.empty()) continue;
-    if (separated(solid, pyramid, tolerance)) continue;
-    Polygon2 shadow = shadowPolygon(solid, p, h, reach, face.frame, bound, tolerance);
-    if (shadow.empty()) continue;
-    const auto [slo, shi] = boundsOf(shadow);
-    if ((slo.array() > hi.array()).any() || (shi.array() < lo.array()).any()) continue;
-    polygons.push_back(std::move(shadow));
-  }
-  return face.luminance * visibleProjectedSolidAngle(p, n, face.frame, polygons);
+  return face.luminance * 0.5 * sum;
 }
 
 }  // namespace
@@ -334,12 +50,7 @@ std::vector<std::vector<double>> exactIlluminance(const Scene& scene,
       face.source = s;
       face.polygon = polygon;
       face.luminance = source.luminance;
-      const auto& v = polygon.vertices();
-      face.frame.normal = polygon.normal();
-      face.frame.offset = face.frame.normal.dot(v[0]);
-      face.frame.origin = polygon.centroid();
-      face.frame.e1 = (v[1] - v[0]).normalized();
-      face.frame.e2 = face.frame.normal.cross(face.frame.e1);
+      face.frame = FaceFrame::of(polygon);
       faces.push_back(std::move(face));
     }
   }

@@ -8,6 +8,10 @@
 // (cos θ <= 0) gets 0; so does one whose segment to c runs through a solid (Cyrus–Beck against
 // each solid's planes moved inwards by the scene tolerance; the solid the point lies on never
 // shades it). Shares nothing with kernels/luminaire.cl but the scene.
+//
+// A luminaire of the area model (scene/luminaire.hpp, LuminaireOpening) gives instead its
+// opening's exact integral (opening_illuminance.hpp), or, where its fit is subdivided, the sum of
+// the point model over the opening's cells, each carrying its share of the distribution.
 #include <span>
 #include <vector>
 

@@ -42,7 +42,8 @@ struct Renderer::State {
   VisibilityEngine visibility;
   std::optional<MeshOptions> mesh;                   // set: with interreflection
   std::unique_ptr<Interreflection> interreflection;  // solved for `scene` when `mesh` is set
-  std::vector<Vec3> sourceColours;                   // luminanceColour per source
+  TransferCache transfers;          // kept across setScene: a sweep's cases share transfers
+  std::vector<Vec3> sourceColours;  // luminanceColour per source
   std::vector<Vec3> solidReflectance;
 
   State(compute::Device& d, const Scene& s, EngineOptions e, std::optional<MeshOptions> m)
@@ -53,8 +54,8 @@ struct Renderer::State {
   void prepare() {
     interreflection.reset();
     if (mesh)
-      interreflection =
-          std::make_unique<Interreflection>(*device, *scene, illuminance, *mesh, engine);
+      interreflection = std::make_unique<Interreflection>(*device, *scene, illuminance, *mesh,
+                                                          engine, &transfers);
     sourceColours.clear();
     for (const Source& source : scene->sources)
       sourceColours.push_back(luminanceColour(source.color));

@@ -15,14 +15,35 @@
 
 #include "geometry/vec.hpp"
 #include "photometry/light_distribution.hpp"
+#include "photometry/luminance_fit.hpp"
 #include "photometry/photometric_data.hpp"
 
 namespace penumbra {
 
 using Mat3 = Eigen::Matrix3d;
 
-// How a luminaire emits: `Point` puts the whole distribution at the photometric centre.
-enum class LuminaireModel { Point };
+// How a luminaire emits: `Point` puts the whole distribution at the photometric centre; `Area`
+// spreads it over the luminous opening (LuminaireOpening).
+enum class LuminaireModel { Point, Area };
+
+// The area model (docs/method.md, "The area model"): the flat luminous opening, centred on the
+// photometric centre in the local frame and facing the nadir, emits the fitted luminance
+// (photometry/luminance_fit.hpp) uniformly over its area, integrated exactly over the part of it
+// each point sees. Where the fit's error exceeds kLuminanceFitTolerance, the opening's bounding
+// rectangle is instead split into cells of at most 5 cm a side (at most 16 along each axis), each
+// a point source at its centre carrying an equal share of the file's own distribution (hard
+// shadows per cell).
+struct LuminaireOpening {
+  std::vector<Vec3> outline;  // local frame, z = 0, ordered so that its normal is −z
+  double lengthM = 0.0;       // bounding rectangle along local x (C0)
+  double widthM = 0.0;        // along local y (C90)
+  photometry::LuminanceFit fit;
+  int partsAlongLength = 1, partsAlongWidth = 1;  // 1 × 1: the fit integrated exactly
+
+  bool subdivided() const { return partsAlongLength * partsAlongWidth > 1; }
+  // The centre of cell (i, j), i along the length, local frame.
+  Vec3 partCentre(int i, int j) const;
+};
 
 struct LuminaireAim {
   double rotateDeg = 0.0;  // about the scene's +z, counter-clockwise seen from above
@@ -49,6 +70,7 @@ struct Luminaire {
   // cd emitted per cd of the file's table: (flux override / file's lamp lumens) × MF.
   double intensityScale = 1.0;
   LuminaireModel model = LuminaireModel::Point;
+  std::optional<LuminaireOpening> opening;  // set for the area model
   std::vector<LuminaireInstance> instances;
 
   // lm of one instance by the zonal method (photometry/zonal_flux.hpp) on the scaled table, before
@@ -61,6 +83,11 @@ struct Luminaire {
   }
 };
 
-std::string luminaireModelName(LuminaireModel model);  // "point"
+std::string luminaireModelName(LuminaireModel model);  // "point", "area"
+
+// The area model's opening for `shape` (flat shapes only: rectangle, disk, ellipse), with the
+// fit of `distribution` and its parts; nothing for shapes that are not flat or have no area.
+std::optional<LuminaireOpening> luminaireOpening(const photometry::LuminousOpening& shape,
+                                                 const photometry::LightDistribution& distribution);
 
 }  // namespace penumbra

@@ -28,6 +28,15 @@ Luminaire buildLuminaire(const LuminaireSpec& spec, const BuildContext& context)
   luminaire.distribution = std::make_shared<const photometry::LightDistribution>(data);
   luminaire.maintenanceFactor = spec.maintenanceFactor;
   luminaire.model = spec.model;
+  if (luminaire.model == LuminaireModel::Area) {
+    luminaire.opening = luminaireOpening(data.opening, *luminaire.distribution);
+    if (!luminaire.opening) {
+      context.fail(spec.modelWhere,
+                   fmt::format("'{}' gives no flat luminous opening (its opening: {}), which the "
+                               "area model needs: use 'model: point'",
+                               spec.file, photometry::openingShapeName(data.opening.shape)));
+    }
+  }
   luminaire.lampLumens = data.lampLumens;
   double fluxScale = 1.0;
   if (spec.fluxLm) {

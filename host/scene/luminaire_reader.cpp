@@ -52,12 +52,9 @@ void readArray(const Reader& reader, const Field& field, LuminaireSpec& spec) {
 LuminaireModel readModel(const Reader& reader, const Field& field) {
   const std::string model = reader.text(field);
   if (model == "point") return LuminaireModel::Point;
-  if (model == "area") {
-    reader.fail(field.where,
-                "the area model (the luminous opening integrated exactly) is not available yet; "
-                "use 'model: point' (the default)");
-  }
-  reader.fail(field.where, "unknown model '" + model + "'; a luminaire's model is 'point'");
+  if (model == "area") return LuminaireModel::Area;
+  reader.fail(field.where,
+              "unknown model '" + model + "'; a luminaire's model is 'point' or 'area'");
 }
 
 }  // namespace
@@ -87,7 +84,10 @@ LuminaireSpec readLuminaire(const Reader& reader, const Field& field) {
                                  formatNumber(spec.maintenanceFactor));
     }
   }
-  if (const std::optional<Field> model = map.find("model")) spec.model = readModel(reader, *model);
+  if (const std::optional<Field> model = map.find("model")) {
+    spec.model = readModel(reader, *model);
+    spec.modelWhere = model->where;
+  }
   return spec;
 }
 

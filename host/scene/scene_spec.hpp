@@ -133,6 +133,7 @@ struct LuminaireSpec {
   Where fluxWhere;
   double maintenanceFactor = 1.0;
   LuminaireModel model = LuminaireModel::Point;
+  Where modelWhere;
   Where where;
 };
 

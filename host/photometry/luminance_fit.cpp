@@ -1,0 +1,86 @@
+#include "photometry/luminance_fit.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "photometry/photometric_frame.hpp"
+
+namespace penumbra::photometry {
+namespace {
+
+struct Node {
+  double cosPhi;   // to the nadir
+  double candela;  // the table's value
+};
+
+std::vector<Node> tableNodes(const LightDistribution& d) {
+  std::vector<Node> nodes;
+  const std::vector<double>& planes = d.planeAnglesDeg();
+  const std::vector<double>& inPlane = d.inPlaneAnglesDeg();
+  for (std::size_t j = 0; j < planes.size(); ++j) {
+    for (std::size_t k = 0; k < inPlane.size(); ++k) {
+      const TableAngles angles = d.type() == PhotometricType::B
+                                     ? TableAngles{inPlane[k], planes[j]}
+                                     : TableAngles{planes[j], inPlane[k]};
+      const Vec3 direction = directionOf(d.type(), angles);
+      nodes.push_back({-direction.z(), d.candela(j, k)});
+    }
+  }
+  return nodes;
+}
+
+LuminanceFit fitOfOrder(const std::vector<Node>& nodes, double areaM2, double peak, int order) {
+  std::vector<const Node*> front;
+  for (const Node& node : nodes)
+    if (node.cosPhi > 0.0) front.push_back(&node);
+  LuminanceFit fit;
+  fit.openingAreaM2 = areaM2;
+  fit.coefficients.assign(static_cast<std::size_t>(order) + 1, 0.0);
+  if (!front.empty()) {
+    Eigen::MatrixXd design(front.size(), order + 1);
+    Eigen::VectorXd target(front.size());
+    for (std::size_t i = 0; i < front.size(); ++i) {
+      double power = areaM2 * front[i]->cosPhi;
+      for (int k = 0; k <= order; ++k) {
+        design(static_cast<Eigen::Index>(i), k) = power;
+        power *= front[i]->cosPhi;
+      }
+      target(static_cast<Eigen::Index>(i)) = front[i]->candela;
+    }
+    const Eigen::VectorXd c = design.colPivHouseholderQr().solve(target);
+    for (int k = 0; k <= order; ++k) fit.coefficients[static_cast<std::size_t>(k)] = c(k);
+  }
+  double worst = 0.0;
+  for (const Node& node : nodes)
+    worst = std::max(worst, std::abs(fit.intensity(node.cosPhi) - node.candela));
+  fit.peakRelativeError = peak > 0.0 ? worst / peak : 0.0;
+  return fit;
+}
+
+}  // namespace
+
+double LuminanceFit::luminance(double cosPhi) const {
+  double sum = 0.0;
+  for (auto c = coefficients.rbegin(); c != coefficients.rend(); ++c) sum = sum * cosPhi + *c;
+  return sum;
+}
+
+double LuminanceFit::intensity(double cosPhi) const {
+  return cosPhi > 0.0 ? openingAreaM2 * cosPhi * luminance(cosPhi) : 0.0;
+}
+
+LuminanceFit fitLuminance(const LightDistribution& distribution, double areaM2, double tolerance,
+                          int maxOrder) {
+  const std::vector<Node> nodes = tableNodes(distribution);
+  const double peak = distribution.peak().candela;
+  LuminanceFit best;
+  for (int order = 0; order <= maxOrder; ++order) {
+    LuminanceFit fit = fitOfOrder(nodes, areaM2, peak, order);
+    if (order == 0 || fit.peakRelativeError < best.peakRelativeError) best = std::move(fit);
+    if (best.peakRelativeError <= tolerance) break;
+  }
+  return best;
+}
+
+}  // namespace penumbra::photometry

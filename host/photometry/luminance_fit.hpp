@@ -1,0 +1,40 @@
+#pragma once
+// The area model's luminance (docs/method.md, "The area model"): a flat luminous opening of area
+// A, facing the local −z (the nadir), emits L(ω) = I(ω) / (A cos φ) uniformly over its area,
+// φ the angle between the emitted direction and the nadir (Radiance ies2rad's model). The fit is
+// a polynomial in cos φ,
+//   L(cos φ) = Σ_{k=0..order} c_k cos^k φ,
+// by least squares on the intensity A cos φ · L at every node of the table in front of the
+// opening (cos φ > 0), so that each C plane weighs alike and the fit is the rotational mean of
+// the distribution about the nadir. Its error is the largest |A cos φ L − I| over all the table's
+// nodes (those behind the opening count with the fit's 0 there), relative to the peak candela:
+// what an asymmetric or narrow distribution loses to the fit.
+#include <vector>
+
+#include "photometry/light_distribution.hpp"
+
+namespace penumbra::photometry {
+
+// The error a fit may have (relative to the peak) for the area model to integrate it exactly;
+// beyond it the opening is split into parts, each a point source (scene/luminaire.hpp).
+constexpr double kLuminanceFitTolerance = 0.01;
+// The highest order tried.
+constexpr int kLuminanceFitMaxOrder = 12;
+
+struct LuminanceFit {
+  std::vector<double> coefficients;  // c_0..c_order, cd/m² (the file's table, unscaled)
+  double openingAreaM2 = 0.0;
+  double peakRelativeError = 0.0;  // at the table's nodes, relative to the peak candela
+
+  int order() const { return static_cast<int>(coefficients.size()) - 1; }
+  double luminance(double cosPhi) const;  // cd/m²
+  double intensity(double cosPhi) const;  // cd: A cos φ L, 0 for cos φ <= 0
+};
+
+// The fit of the lowest order (0..maxOrder) whose error is within `tolerance`, else the one with
+// the least error. `areaM2` > 0.
+LuminanceFit fitLuminance(const LightDistribution& distribution, double areaM2,
+                          double tolerance = kLuminanceFitTolerance,
+                          int maxOrder = kLuminanceFitMaxOrder);
+
+}  // namespace penumbra::photometry
