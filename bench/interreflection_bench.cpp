@@ -1,6 +1,6 @@
 // Interreflection: what the solver costs and how exact it is.
 //  * The example office (data/office.yaml) at element sizes 1.0, 0.5 and 0.25 m: elements,
-//    quadrature nodes, seconds per phase (mesh and refinement, element transfer, LU solve) and
+//    quadrature nodes, seconds per phase (mesh and refinement, element transfer, solve) and
 //    the process's peak memory, with the slope of the transfer's time against the element count.
 //  * A reflectance study on the office (the carpet's ρ from 0.1 to 0.7), through the estimator a
 //    sweep keeps: seconds per case for the total E on every grid; the cases after the first take
@@ -43,7 +43,8 @@ void officeCurve(compute::Device& device, const std::vector<double>& sizes) {
   const Scene scene = loadScene(fs::path(PENUMBRA_SOURCE_DIR) / "data/office.yaml");
   IlluminanceEngine direct(device, scene);
   fmt::print("data/office.yaml\n{:>8} {:>9} {:>8} {:>8} {:>10} {:>8} {:>10} {:>9}\n", "size [m]",
-             "elements", "nodes", "mesh [s]", "transfer [s]", "LU [s]", "total [s]", "peak [MB]");
+             "elements", "nodes", "mesh [s]", "transfer [s]", "solve [s]", "total [s]",
+             "peak [MB]");
   double lastElements = 0.0, lastTransfer = 0.0;
   for (const double size : sizes) {
     MeshOptions options;
@@ -81,7 +82,7 @@ void reflectanceStudy(const std::string& deviceName) {
   fmt::print(
       "\ndata/office.yaml, the carpet's reflectance varied ({} grid points)\n"
       "{:>5} {:>10} {:>10} {:>10} {:>9}\n",
-      points.size(), "rho", "Eavg [lx]", "case [s]", "transfer", "LU [s]");
+      points.size(), "rho", "Eavg [lx]", "case [s]", "transfer", "solve [s]");
   for (const double rho : {0.1, 0.3, 0.5, 0.7}) {
     scene.materials[static_cast<std::size_t>(carpet)].reflectance = Vec3::Constant(rho);
     const auto start = Clock::now();

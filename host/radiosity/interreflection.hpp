@@ -28,7 +28,7 @@ struct InterreflectionReport {
   double residual = 0.0;                 // of the linear solve, relative
   double meshSeconds = 0.0;              // faces reached, cut into elements, direct E at nodes
   double transferSeconds = 0.0;          // element-to-element transfer (kernel); 0 when reused
-  double solveSeconds = 0.0;             // LU factorisation and solve
+  double solveSeconds = 0.0;             // the linear solve (BiCGSTAB), every channel
   bool transferReused = false;           // the geometry's transfer came from the cache
   bool refinementCapped = false;         // refinement stopped at MeshOptions::maxElements
   std::vector<std::string> blackSolids;  // reached by light, no material: black

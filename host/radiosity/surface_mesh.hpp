@@ -22,11 +22,13 @@ struct MeshOptions {
   // the average of the exact point transfer over these nodes.
   int quadratureOrder = 4;
   // Elements where the direct light is uneven are cut in four, up to `refinementLevels` times:
-  // those whose ρ·(Emax - Emin)·area over their nodes exceeds `refinement` times the whole
-  // first reflected flux Σ ρ·E·area.
+  // those whose (Emax - Emin)·area over their nodes, each source's E scaled to unit flux onto
+  // the elements, exceeds `refinement` times the number of sources that light anything
+  // (unevenElements in interreflection.cpp).
   double refinement = 1e-3;
   int refinementLevels = 3;
-  // The most elements the dense transfer and LU take (8 bytes × N² each: 0.5 GB at 8 000).
+  // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000, and as much again
+  // for the system the solver iterates on).
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
   // any refinement is refused with the element size that would fit.
   std::size_t maxElements = 8000;
