@@ -29,6 +29,8 @@ struct RegionSums {
 // Below this spread of log scene values (a flat region) the far pixels fix no slope: b = 1, a
 // pure gain.
 constexpr double kFlatLogSpread = 0.05;
+// A display value within 5 % of the image's darkest counts as held at black.
+constexpr double kFloorMargin = 0.05;
 
 }  // namespace
 
@@ -86,8 +88,17 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
   }
   std::vector<RegionSums> sums(regions.count, RegionSums{std::vector<double>(options.band, 0.0),
                                                          std::vector<int>(options.band, 0)});
+  // Pixels the display holds at its black carry no halo (an umbra at the floor) and would bend
+  // the far pixels' line: only those above the image's darkest display value (by 5 %) count. A
+  // display's white needs no such care: far pixels at white give a flat line, and a halo may
+  // well reach white.
+  float darkest = HUGE_VALF;
+  for (float v : displayValue.values) {
+    if (v > 0) darkest = std::min(darkest, v);
+  }
+  const double floor = darkest * (1 + kFloorMargin);
   const auto counted = [&](size_t i) {
-    return distance[i] != kUnreached && sceneValue.values[i] > 0 && displayValue.values[i] > 0;
+    return distance[i] != kUnreached && sceneValue.values[i] > 0 && displayValue.values[i] > floor;
   };
   for (size_t i = 0; i < distance.size(); ++i) {
     if (!counted(i) || distance[i] < options.farDistance) continue;

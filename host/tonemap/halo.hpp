@@ -5,7 +5,8 @@
 // pure gain, when they are flat); each near pixel's display value over the value that line
 // predicts for its scene value, averaged at each distance from the edge within a band; a near
 // pixel counts only if its scene value lies within the far pixels' range (within 5 %), so that
-// the line is never extrapolated into an umbra, where a display's black floor is no halo. A map
+// the line is never extrapolated into an umbra, and only pixels above the display's black (5 %
+// above the image's darkest display value) count: a black floor is no halo. A map
 // without halos treats a region alike near and far (clip, linear, any global curve), and the
 // measure is then 0 whatever the region's own gradients, which the scene value carries.
 #include <vector>
