@@ -4,6 +4,7 @@
 #include <cmath>
 #include <deque>
 #include <stdexcept>
+#include <vector>
 
 #include "tonemap/region_map.hpp"
 
@@ -32,23 +33,15 @@ constexpr double kFlatLogSpread = 0.05;
 // A display value within 5 % of the image's darkest counts as held at black.
 constexpr double kFloorMargin = 0.05;
 
-}  // namespace
+constexpr int kUnreached = -1;
 
-HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces,
-                         const ScalarImage& displayValue, const HaloOptions& options) {
-  if (sceneValue.width != faces.width || sceneValue.height != faces.height ||
-      displayValue.width != faces.width || displayValue.height != faces.height) {
-    throw std::invalid_argument("halo measure: the images differ in size");
-  }
-  if (options.band < 1 || options.farDistance < options.band) {
-    throw std::invalid_argument("halo measure: need 1 <= band <= farDistance");
-  }
-  const RegionMap regions = findRegions(faces);
-  const int width = faces.width, height = faces.height;
-  constexpr int kUnreached = -1;
-  std::vector<int> distance(faces.ids.size(), kUnreached);
+// Per pixel: 4-steps inside its region from the nearest pixel of the region that has a
+// 4-neighbour in another region across a strong edge (breadth first); kUnreached when none.
+std::vector<int> distanceFromStrongEdges(const RegionMap& regions, const ScalarImage& sceneValue,
+                                         double edgeRatio) {
+  const int width = regions.width, height = regions.height;
+  std::vector<int> distance(regions.region.size(), kUnreached);
   std::deque<size_t> queue;
-  // Seeds: pixels of a region with a 4-neighbour in another region across a strong edge.
   for (int y = 0; y < height; ++y) {
     for (int x = 0; x < width; ++x) {
       const size_t i = regions.index(x, y);
@@ -58,7 +51,7 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
       const auto check = [&](int nx, int ny) {
         const size_t n = regions.index(nx, ny);
         if (regions.region[n] != r && regions.region[n] != RegionMap::kNone &&
-            strongPair(sceneValue.values[i], sceneValue.values[n], options.edgeRatio)) {
+            strongPair(sceneValue.values[i], sceneValue.values[n], edgeRatio)) {
           seed = true;
         }
       };
@@ -69,7 +62,6 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
       if (seed) distance[i] = 0, queue.push_back(i);
     }
   }
-  // Distance in 4-steps inside each region from its seeds (breadth first).
   while (!queue.empty()) {
     const size_t i = queue.front();
     queue.pop_front();
@@ -86,6 +78,22 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
     if (y > 0) visit(x, y - 1);
     if (y + 1 < height) visit(x, y + 1);
   }
+  return distance;
+}
+
+}  // namespace
+
+HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces,
+                         const ScalarImage& displayValue, const HaloOptions& options) {
+  if (sceneValue.width != faces.width || sceneValue.height != faces.height ||
+      displayValue.width != faces.width || displayValue.height != faces.height) {
+    throw std::invalid_argument("halo measure: the images differ in size");
+  }
+  if (options.band < 1 || options.farDistance < options.band) {
+    throw std::invalid_argument("halo measure: need 1 <= band <= farDistance");
+  }
+  const RegionMap regions = findRegions(faces);
+  const std::vector<int> distance = distanceFromStrongEdges(regions, sceneValue, options.edgeRatio);
   std::vector<RegionSums> sums(regions.count, RegionSums{std::vector<double>(options.band, 0.0),
                                                          std::vector<int>(options.band, 0)});
   // Pixels the display holds at its black carry no halo (an umbra at the floor) and would bend

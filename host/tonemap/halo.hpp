@@ -9,8 +9,6 @@
 // above the image's darkest display value) count: a black floor is no halo. A map
 // without halos treats a region alike near and far (clip, linear, any global curve), and the
 // measure is then 0 whatever the region's own gradients, which the scene value carries.
-#include <vector>
-
 #include "image/images.hpp"
 
 namespace penumbra {

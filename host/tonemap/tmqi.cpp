@@ -10,7 +10,7 @@
 namespace penumbra {
 namespace {
 
-// Q = a S^α + (1 - a) N^β (the paper's eq. 22 and the authors' code).
+// Q = a S^α + (1 - a) N^β.
 constexpr double kFidelityShare = 0.8012, kFidelityExponent = 0.3046, kNaturalnessExponent = 0.7088;
 // Scale weights, finest first; spatial frequency 16, 8, 4, 2, 1 cycles/degree.
 constexpr std::array<double, kTmqiScales> kScaleWeight = {0.0448, 0.2856, 0.3001, 0.2363, 0.1333};
