@@ -141,4 +141,24 @@ inline HdrScene roomView(int width, int height, int boxes, unsigned seed = 5) {
   return scene;
 }
 
+// Two flat faces side by side, 1:100 (1 and 100 cd/m², each `side` pixels wide, `stepHeight`
+// tall), above a band `bandHeight` tall with no surface that holds a window (10⁴ cd/m², its own
+// face, a square of half the band's height in its middle). The window sets the display's white,
+// as in a room with one in view, so the step lies near black in the linear map; the band keeps
+// the window from any edge with the step. The halo test and bench/tmqi_tool.
+inline HdrScene stepBesideWindow(int side, int stepHeight, int bandHeight) {
+  HdrScene scene = staircase({100.0}, side, stepHeight + bandHeight, 1.0);
+  const int width = 2 * side, square = bandHeight / 2;
+  const int x0 = side - square / 2, y0 = stepHeight + bandHeight / 4;
+  for (int y = stepHeight; y < stepHeight + bandHeight; ++y) {
+    for (int x = 0; x < width; ++x) {
+      const bool window = y >= y0 && y < y0 + square && x >= x0 && x < x0 + square;
+      float* p = scene.hdr.pixel(x, y);
+      p[0] = p[1] = p[2] = window ? 1e4f : 0.0f;
+      scene.faces.at(x, y) = window ? 3 : FaceIdImage::kNoSurface;
+    }
+  }
+  return scene;
+}
+
 }  // namespace penumbra::testing

@@ -1,0 +1,98 @@
+// Halos (host/tonemap/halo.*): the measure against hand-made display images, and the display maps
+// on a synthetic step.
+#include "tonemap/halo.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "synthetic_images.hpp"
+#include "tonemap/display_spaces.hpp"
+#include "tonemap/tone_map.hpp"
+
+namespace penumbra {
+namespace {
+
+ScalarImage spaceZero(const testing::HdrScene& scene) {
+  const DisplaySpaces spaces = displaySpaces(scene.hdr, 0.02);
+  ScalarImage v(spaces.width, spaces.height);
+  v.values = spaces.value0;
+  return v;
+}
+
+// Two faces 1:100 with a lighting gradient down each (×3 from top to bottom).
+testing::HdrScene litStep() {
+  testing::HdrScene scene = testing::staircase({100.0}, 128, 64, 1.0);
+  for (int y = 0; y < 64; ++y) {
+    for (int x = 0; x < 256; ++x) {
+      float* p = scene.hdr.pixel(x, y);
+      p[0] = p[1] = p[2] = p[0] * static_cast<float>(1 + 2 * y / 63.0);
+    }
+  }
+  return scene;
+}
+
+template <typename Display>
+ScalarImage displayOf(const ScalarImage& scene, Display display) {
+  ScalarImage out(scene.width, scene.height);
+  for (int y = 0; y < scene.height; ++y) {
+    for (int x = 0; x < scene.width; ++x) out.at(x, y) = display(x, y, scene.at(x, y));
+  }
+  return out;
+}
+
+TEST(Halo, NoneWhereEachRegionHasOneGainOrOneCurve) {
+  const testing::HdrScene scene = litStep();
+  const ScalarImage v0 = spaceZero(scene);
+  // A gain per region (a local map without halos), and a global power curve.
+  const ScalarImage gains =
+      displayOf(v0, [](int x, int, double v) { return v * (x < 128 ? 0.3 : 0.005); });
+  const ScalarImage curve = displayOf(v0, [](int, int, double v) { return std::sqrt(v) / 20; });
+  for (const ScalarImage* display : {&gains, &curve}) {
+    const HaloMeasure halo = measureHalos(v0, scene.faces, *display);
+    EXPECT_EQ(halo.regions, 2);
+    EXPECT_LT(halo.largest(), 1e-5);
+  }
+}
+
+TEST(Halo, MeasuresALiftNearTheEdge) {
+  // The bright side lifted by 20 % next to the edge, decaying over 3 pixels: at distance 0 the
+  // lift is 0.2 over a far level lifted by at most 0.2·e⁻⁸ (distance ≥ 24).
+  const testing::HdrScene scene = litStep();
+  const ScalarImage v0 = spaceZero(scene);
+  const ScalarImage lifted = displayOf(v0, [](int x, int, double v) {
+    const int distance = x - 128;
+    return distance < 0 ? v : v * (1 + 0.2 * std::exp(-distance / 3.0));
+  });
+  const HaloMeasure halo = measureHalos(v0, scene.faces, lifted);
+  EXPECT_NEAR(halo.overshoot, 0.2, 1e-4);
+  EXPECT_LT(halo.undershoot, 1e-5);
+  // Mean over the near pixels of both regions: the bright side's four distances, 64 pixels each,
+  // lifted by 0.2 e^(-d/3); the dark side's, unlifted, 62 each (its two top rows, within 5 % of
+  // the image's darkest value, count as held at black).
+  const double lift = 0.2 * (1 + std::exp(-1 / 3.0) + std::exp(-2 / 3.0) + std::exp(-1.0));
+  EXPECT_NEAR(halo.meanDeviation, 64 * lift / (4 * 64 + 4 * 62), 1e-4);
+}
+
+// The constraint map on a step beside a window: the weak rows pull every vertex of the bright
+// side towards its near-black linear value, the edge rows hold it up at the edge, and the medium
+// rows spread that lift over a distance that grows with medium / weak. The halo shrinks as that
+// ratio grows.
+TEST(Halo, ConstraintMapHaloShrinksAsMediumRowsOutweighWeakRows) {
+  const testing::HdrScene scene = testing::stepBesideWindow(128, 64, 32);
+  const ScalarImage v0 = spaceZero(scene);
+  double previous = HUGE_VAL;
+  for (double weak : {0.1, 0.01, 0.001}) {
+    ToneMapOptions options;
+    options.weak = weak;
+    const HaloMeasure halo =
+        measureHalos(v0, scene.faces, displayValues(scene.hdr, scene.faces, options));
+    EXPECT_EQ(halo.regions, 1);  // the dark side sits at the display's black: left out
+    EXPECT_LT(halo.largest(), previous) << "weak " << weak;
+    previous = halo.largest();
+  }
+  EXPECT_LT(previous, 0.01);  // medium / weak = 1000: 8.8e-5 measured
+}
+
+}  // namespace
+}  // namespace penumbra
