@@ -3,8 +3,9 @@
 //  - lambertian-rect: the Lambertian `rect` source of the same flux, on the device (kernel) and
 //    by the exact host reference in double (exactIlluminance);
 //  - point: a luminaire's point model on the device (kernels/luminaire.cl) and on the host;
-//  - area: the area model at the fitted order, on the host in double (where it runs), for the
-//    Lambertian panel (order 0) and the narrow downlight (its fitted order).
+//  - area: the area model at the fitted order, on the device (the illuminance kernel's moment
+//    term, kernels/luminance_moments.cl) and on the host in double, for the Lambertian panel
+//    (order 0) and the narrow downlight (its fitted order).
 // Prints one JSON line per case.
 //   usage: luminaire_bench [--device cpu|gpu|<index>] [--points N] [--repeat R]
 #include <nlohmann/json.hpp>
@@ -124,12 +125,16 @@ int main(int argc, char** argv) {
     Scene area = room();
     area.luminaires.push_back(luminaire(file, LuminaireModel::Area));
     const LuminaireOpening& o = *area.luminaires.front().opening;
+    const nlohmann::json fit = {{"fit_order", o.fit.order()},
+                                {"fit_error", o.fit.peakRelativeError},
+                                {"parts", {o.partsAlongLength, o.partsAlongWidth}},
+                                {"opening_vertices", o.outline.size()}};
+    IlluminanceEngine areaEngine(device, area);
+    areaEngine.illuminance(all.first(64));
+    report(std::string("area ") + file, deviceName, points.size(),
+           best(repeat, [&] { areaEngine.illuminance(all); }), fit);
     report(std::string("area ") + file, "host (double)", points.size(),
-           best(repeat, [&] { referenceLuminaireIlluminance(area, all); }),
-           {{"fit_order", o.fit.order()},
-            {"fit_error", o.fit.peakRelativeError},
-            {"parts", {o.partsAlongLength, o.partsAlongWidth}},
-            {"opening_vertices", o.outline.size()}});
+           best(repeat, [&] { referenceLuminaireIlluminance(area, all); }), fit);
   }
   return 0;
 }
