@@ -3,8 +3,10 @@
 //  - lambertian-rect: the Lambertian `rect` source of the same flux, on the device (kernel) and
 //    by the exact host reference in double (exactIlluminance);
 //  - point: a luminaire's point model on the device (kernels/luminaire.cl) and on the host;
-//  - area: the area model at the fitted order, on the host in double (where it runs), for the
-//    Lambertian panel (order 0) and the narrow downlight (its fitted order).
+//  - area: the area model at the fitted order, on the device (the illuminance kernel's moment
+//    term, kernels/luminance_moments.cl) and on the host in double, for the Lambertian panel
+//    (order 0) and the narrow downlight (its fitted order), and the panel's opening with a
+//    luminance of order 9, L ∝ 0.25 + 0.75 cos⁹φ (what the moment term costs at that order).
 // Prints one JSON line per case.
 //   usage: luminaire_bench [--device cpu|gpu|<index>] [--points N] [--repeat R]
 #include <nlohmann/json.hpp>
@@ -124,12 +126,32 @@ int main(int argc, char** argv) {
     Scene area = room();
     area.luminaires.push_back(luminaire(file, LuminaireModel::Area));
     const LuminaireOpening& o = *area.luminaires.front().opening;
+    const nlohmann::json fit = {{"fit_order", o.fit.order()},
+                                {"fit_error", o.fit.peakRelativeError},
+                                {"parts", {o.partsAlongLength, o.partsAlongWidth}},
+                                {"opening_vertices", o.outline.size()}};
+    IlluminanceEngine areaEngine(device, area);
+    areaEngine.illuminance(all.first(64));
+    report(std::string("area ") + file, deviceName, points.size(),
+           best(repeat, [&] { areaEngine.illuminance(all); }), fit);
     report(std::string("area ") + file, "host (double)", points.size(),
-           best(repeat, [&] { referenceLuminaireIlluminance(area, all); }),
-           {{"fit_order", o.fit.order()},
-            {"fit_error", o.fit.peakRelativeError},
-            {"parts", {o.partsAlongLength, o.partsAlongWidth}},
-            {"opening_vertices", o.outline.size()}});
+           best(repeat, [&] { referenceLuminaireIlluminance(area, all); }), fit);
+  }
+  {
+    Luminaire ordered = panel;
+    const double c0 = panel.opening->fit.coefficients[0];
+    ordered.opening->fit.coefficients.assign(10, 0.0);
+    ordered.opening->fit.coefficients[0] = 0.25 * c0;
+    ordered.opening->fit.coefficients[9] = 0.75 * c0;
+    Scene area = room();
+    area.luminaires.push_back(ordered);
+    IlluminanceEngine engine(device, area);
+    engine.illuminance(all.first(64));
+    const nlohmann::json fit = {{"fit_order", 9}, {"opening_vertices", 4}};
+    report("area panel opening, order 9", deviceName, points.size(),
+           best(repeat, [&] { engine.illuminance(all); }), fit);
+    report("area panel opening, order 9", "host (double)", points.size(),
+           best(repeat, [&] { referenceLuminaireIlluminance(area, all); }), fit);
   }
   return 0;
 }

@@ -162,14 +162,18 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tab
  * themselves, not of a radian: the terms of a small source nearly cancel, and an error δ in one
  * angle costs about L·δ. edge_term8 gets that from b − a, exact where a and b are nearly
  * parallel; the ends of a piece may be a crossing direction and a point of any length, so the
- * cross product is made accurate instead (diff_of_products). */
-#define PN_DEFINE_PIECE_TERM(T, S)                                                        \
-  inline T piece_term##S(T ax, T ay, T az, T bx, T by, T bz, T nx, T ny, T nz) {          \
-    T cx = diff_of_products##S(ay, bz, az, by), cy = diff_of_products##S(az, bx, ax, bz), \
-      cz = diff_of_products##S(ax, by, ay, bx);                                           \
-    T s = sqrt(cx * cx + cy * cy + cz * cz);                                              \
-    T term = -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s;  \
-    return select(term, (T)(0.0f), s <= 0.0f);                                            \
+ * cross product is made accurate instead (diff_of_products). A face of polynomial luminance takes
+ * the moment term (luminance_moments.cl) on the same cross product, negated to b × a. */
+#define PN_DEFINE_PIECE_TERM(T, S)                                                             \
+  inline T piece_term##S(T ax, T ay, T az, T bx, T by, T bz, T nx, T ny, T nz,                 \
+                         const PnEmission* em) {                                               \
+    T cx = diff_of_products##S(ay, bz, az, by), cy = diff_of_products##S(az, bx, ax, bz),      \
+      cz = diff_of_products##S(ax, by, ay, bx);                                                \
+    T s = sqrt(cx * cx + cy * cy + cz * cz);                                                   \
+    T term = em->order >= 0                                                                    \
+                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, em)    \
+                 : -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s; \
+    return select(term, (T)(0.0f), s <= 0.0f);                                                 \
   }
 
 #define PN_DEFINE_CONTOUR_TWINS(T, M, S) \
@@ -219,6 +223,6 @@ inline float3 crossing_point(float3 m_self, int self, float3 m_other, int other,
   return (float3)(x, y, z);
 }
 
-inline float piece_term(float3 a, float3 b, float3 n) {
-  return piece_term1(a.x, a.y, a.z, b.x, b.y, b.z, n.x, n.y, n.z);
+inline float piece_term(float3 a, float3 b, float3 n, const PnEmission* em) {
+  return piece_term1(a.x, a.y, a.z, b.x, b.y, b.z, n.x, n.y, n.z, em);
 }

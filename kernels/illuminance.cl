@@ -22,13 +22,13 @@ __kernel void illuminance(
     __global const float* point_z, __global const float* normal_x, __global const float* normal_y,
     __global const float* normal_z, __global const int* point_solid,
     __global const PnSourceFace* faces, __global const float4* source_vertices,
-    __global const PnOccluder* occluders, __global const float4* planes, __global const int4* edges,
+    __global const PnLuminancePolynomial* luminances, __global const PnOccluder* occluders,
+    __global const float4* planes, __global const int4* edges,
     __global const float4* occluder_vertices, __global const PnAperture* apertures,
     __global const PnPatchFace* patch_faces, __global const int* candidates,
     __global float* illuminance_lx, __global int* errors, __global uchar* classes) {
-  const PnSceneTables tables = {faces,     source_vertices, occluders,
-                                planes,    edges,           occluder_vertices,
-                                apertures, patch_faces,     candidates};
+  const PnSceneTables tables = {faces, source_vertices,   luminances, occluders,   planes,
+                                edges, occluder_vertices, apertures,  patch_faces, candidates};
   const bool culling = (params.paths & PN_PATH_CULLING) != 0;
   const bool lanes_path = culling && (params.paths & PN_PATH_LANES) != 0;
   const float eps_length = params.epsLength;

@@ -7,7 +7,7 @@
  * 3-D segment it comes from: a source edge, the horizon chord, or an occluder's contour edge.
  * Here: one edge's term in eight lanes, and the face clipped by each lane's horizon. */
 
-#include "prelude.cl"
+#include "luminance_moments.cl"
 
 /* cross(b, a) is computed as cross(b − a, a): for a short edge far from P, a and b are long and
  * nearly parallel, b − a is exact in float (Sterbenz) and short, and the products are |e|·|a|
@@ -15,14 +15,18 @@
  * about 2e-6 to 1e-7, which matters because the terms of a distant source nearly cancel. (The
  * penumbra paths integrate pieces of edges with piece_term, which keeps this accuracy for ends
  * that are not vertices.) A zero-length edge, or one whose line passes through P, spans no solid
- * angle. */
+ * angle. A face of polynomial luminance takes the moment term (luminance_moments.cl) on the same
+ * cross product. */
 inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
-                         float8 nx, float8 ny, float8 nz) {
+                         float8 nx, float8 ny, float8 nz, const PnEmission* em) {
   float8 ex = bx - ax, ey = by - ay, ez = bz - az;
   float8 cx = ey * az - ez * ay;
   float8 cy = ez * ax - ex * az;
   float8 cz = ex * ay - ey * ax;
   float8 s = sqrt(cx * cx + cy * cy + cz * cz);
+  if (em->order >= 0)
+    return select(moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, em),
+                  (float8)(0.0f), s <= 0.0f);
   float8 theta = atan2(s, ax * bx + ay * by + az * bz);
   float8 term = theta * (nx * cx + ny * cy + nz * cz) / s;
   return select(term, (float8)(0.0f), s <= 0.0f);
@@ -67,9 +71,11 @@ inline int8 chord_cut8(const HorizonChord8* c) {
 typedef struct {
   PnSum8 sum;
   HorizonChord8 chord;
+  const PnEmission* em; /* how the face emits */
 } HorizonSum8;
 
-inline void horizon_begin8(HorizonSum8* h) {
+inline void horizon_begin8(HorizonSum8* h, const PnEmission* em) {
+  h->em = em;
   h->sum.s = h->sum.c = 0.0f;
   chord_begin8(&h->chord);
 }
@@ -80,9 +86,9 @@ inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float
   int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
   float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
   float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
-  float8 term =
-      edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
-                 select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz);
+  float8 term = edge_term8(select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
+                           select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny,
+                           nz, h->em);
   pn_sum_add8(&h->sum, select((float8)(0.0f), term, a_in | b_in));
   chord_track8(&h->chord, a_in, b_in, cx, cy, cz);
 }
@@ -104,7 +110,7 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
     pn_sum_add8(&h->sum, select((float8)(0.0f),
                                 edge_term8(c->exit_x, c->exit_y, c->exit_z, c->entry_x, c->entry_y,
-                                           c->entry_z, nx, ny, nz),
+                                           c->entry_z, nx, ny, nz, h->em),
                                 cut));
   return h->sum.s + h->sum.c;
 }
@@ -115,13 +121,14 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
 inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                           PnSourceFace face, const PnSceneTables* tables) {
   const int m = face.vertexCount;
+  const PnEmission em = emission_of(face, tables);
   float4 q = tables->sourceVertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
     q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
     float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
-    pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz));
+    pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz, &em));
     ax = bx;
     ay = by;
     az = bz;
@@ -142,8 +149,9 @@ inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny,
 
 inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
                                PnSourceFace face, const PnSceneTables* tables) {
+  const PnEmission em = emission_of(face, tables);
   HorizonSum8 h;
-  horizon_begin8(&h);
+  horizon_begin8(&h, &em);
   const int m = face.vertexCount;
   float4 q = tables->sourceVertices[face.firstVertex];
   float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;

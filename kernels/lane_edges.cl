@@ -114,7 +114,8 @@ inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const E
 void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                         float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
                         const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
-                        float8 nx, float8 ny, float8 nz, const Contours8* cs, PnSum8* acc) {
+                        float8 nx, float8 ny, float8 nz, const PnEmission* em, const Contours8* cs,
+                        PnSum8* acc) {
   if (!pn_any(on)) return;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -221,7 +222,7 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       stop.set = select(stop.set, e0[w].set, at);
     }
     turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
-    float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz);
+    float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, em);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }
 }

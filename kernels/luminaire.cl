@@ -2,8 +2,9 @@
  * point, from each placed luminaire's photometric centre c,
  *   E = I(ω) · cos θ / d²,
  * ω the direction c → point in the luminaire's frame, θ between the point's normal and the
- * direction to c, d = |c − p|. A point behind its own surface (cos θ <= 0) and a point whose
- * segment to c runs through a solid receive nothing from that luminaire; `seen` says which
+ * direction to c, d = |c − p|; a cell of a subdivided opening is such a source at the cell's
+ * centre, times its share of the table. A point behind its own surface (cos θ <= 0) and a point
+ * whose segment to c runs through a solid receive nothing from that luminaire; `seen` says which
  * luminaires a point sees ([luminaire][point], row length params.pointStride), for a render's
  * interval plan. One work-item per
  * point; the luminaires' sum is compensated (prelude.cl). The host binds the arguments in this
@@ -46,7 +47,7 @@ __kernel void luminaire_illuminance(const PnLuminaireParams params, __global con
     const float3 in_frame = (float3)(dot(lum.toLocal0.xyz, away), dot(lum.toLocal1.xyz, away),
                                      dot(lum.toLocal2.xyz, away));
     const float intensity = pn_table_intensity(tables[lum.table], angles, candela, in_frame);
-    pn_sum_add(&e, intensity * cos_theta / d2);
+    pn_sum_add(&e, lum.share * intensity * cos_theta / d2);
   }
   illuminance_lx[i] = e.s + e.c;
 }

@@ -26,8 +26,9 @@ typedef struct {
   float8 x[PN_VEC_SOURCE], y[PN_VEC_SOURCE], z[PN_VEC_SOURCE], h[PN_VEC_SOURCE];
   EdgePlane8 side[PN_VEC_SOURCE + 1];
   HorizonChord8 chord;
-  int8 cut; /* lanes whose horizon cuts the face */
-  int m;    /* the face's vertex count */
+  int8 cut;            /* lanes whose horizon cuts the face */
+  int m;               /* the face's vertex count */
+  PnEmission emission; /* how the face emits (luminance_moments.cl) */
 } SourcePolygon8;
 
 /* Fills S' for the lanes in `asked` and returns those that see the face: in front of it and not
@@ -38,6 +39,7 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   const PnSourceFace face = fv->face;
   const int m = face.vertexCount;
   s->m = m;
+  s->emission = emission_of(face, tables);
   for (int i = 0; i < m; ++i) {
     float4 q = tables->sourceVertices[face.firstVertex + i];
     s->x[i] = q.x - px;
@@ -244,13 +246,13 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
     float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
     visible_edge_term8(s->x[i], s->y[i], s->z[i], s->x[j], s->y[j], s->z[j], s->side[i].mx,
                        s->side[i].my, s->side[i].mz, i, lo, hi, &none, &none, lanes & (a_in | b_in),
-                       -1, pts->nx, pts->ny, pts->nz, cs, sum);
+                       -1, pts->nx, pts->ny, pts->nz, &s->emission, cs, sum);
   }
   const HorizonChord8* chord = &s->chord;
   visible_edge_term8(chord->exit_x, chord->exit_y, chord->exit_z, chord->entry_x, chord->entry_y,
                      chord->entry_z, s->side[m].mx, s->side[m].my, s->side[m].mz, m, (float8)(0.0f),
                      (float8)(1.0f), &none, &none, lanes & s->cut, -1, pts->nx, pts->ny, pts->nz,
-                     cs, sum);
+                     &s->emission, cs, sum);
 }
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
@@ -285,7 +287,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
                      &lo_end, &hi_end);
       visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
                          PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, pts->nx, pts->ny,
-                         pts->nz, cs, sum);
+                         pts->nz, &s->emission, cs, sum);
     }
 }
 

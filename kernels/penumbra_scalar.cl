@@ -22,6 +22,7 @@ typedef struct {
   float3 contour_side[PN_MAX_CONTOUR_EDGES];
   int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
   int active_count;
+  PnEmission emission; /* how the face emits (luminance_moments.cl) */
 } PenumbraState;
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
@@ -218,7 +219,7 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
       p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0);
     if (hi_id[k] != PN_ID_VERTEX)
       p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1);
-    pn_sum_add(acc, piece_term(p0, p1, n));
+    pn_sum_add(acc, piece_term(p0, p1, n, &st->emission));
   }
 }
 
@@ -270,6 +271,7 @@ float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX
 bool source_polygon(PenumbraState* st, float3 p, float3 n, PnSourceFace face,
                     const PnSceneTables* tables, bool aperture, const float3* corners) {
   st->source_count = 0;
+  st->emission = emission_of(face, tables);
   if (aperture) {
     for (int i = 0; i < 4; ++i) st->source[i] = corners[i];
     st->source_count = 4;

@@ -11,6 +11,7 @@
 typedef struct {
   __global const PnSourceFace* faces;
   __global const float4* sourceVertices;
+  __global const PnLuminancePolynomial* luminances; /* PnSourceFace::luminance indexes these */
   __global const PnOccluder* occluders;
   __global const float4* planes; /* occluder faces, separating, penumbra and umbra planes */
   __global const int4* edges;    /* per occluder: (from, to, left face, right face) */

@@ -39,11 +39,22 @@ typedef struct {
   pn_float4 plane; /* xyz: unit emission direction, w: offset (direction·x on the face) */
   pn_int firstVertex, vertexCount;
   pn_int firstOccluder, occluderCount;
-  float halfLuminance; /* L/2 in cd/m²: the factor in front of Lambert's contour integral */
+  float halfLuminance; /* L/2 in cd/m²: the factor in front of Lambert's contour integral; for a
+                        * polynomial luminance, half the scale of its coefficients */
   pn_int source;       /* index of the scene source */
   pn_int aperture;     /* index into the apertures, -1 for none */
-  pn_int pad1;
+  pn_int luminance;    /* index into the luminance polynomials, -1 for a uniform luminance */
 } PnSourceFace;
+
+/* A face whose luminance depends on the emitted direction e as a polynomial in cos φ = N·e, N its
+ * emission direction (a photometric luminaire's opening, kernels/luminance_moments.cl):
+ * L = 2 · halfLuminance · Σ_k coefficient[k] cos^k φ, k = 0..order. */
+#define PN_MAX_LUMINANCE_TERMS 13 /* orders 0..12 (host/photometry/luminance_fit.hpp) */
+typedef struct {
+  float coefficient[PN_MAX_LUMINANCE_TERMS]; /* cd/m² */
+  pn_int order;
+  pn_int pad1, pad2;
+} PnLuminancePolynomial;
 
 /* A face that fills an opening of the room, seen through the opening's room-side rectangle A
  * (host/shadow/aperture.hpp). A lane strictly in front of A's plane (by more than the length
@@ -144,13 +155,15 @@ typedef struct {
 #define PN_PHOTOMETRIC_B 1
 #define PN_PHOTOMETRIC_A 2
 
-/* One placed luminaire: its photometric centre (relative to the kernel's origin) and the rows of
- * the rotation from the scene to its local frame (local = R · scene). */
+/* One point source of the point model: a placed luminaire's photometric centre, or the centre of
+ * a cell of its opening (relative to the kernel's origin), and the rows of the rotation from the
+ * scene to the luminaire's local frame (local = R · scene). */
 typedef struct {
   pn_float4 centre;
   pn_float4 toLocal0, toLocal1, toLocal2;
   pn_int table; /* index into the PnCandelaTable list */
-  pn_int pad1, pad2, pad3;
+  float share;  /* the part of the table it emits: 1, or 1/cells for a cell of an opening */
+  pn_int pad2, pad3;
 } PnLuminaire;
 
 /* A solid as the point model's shadow test reads it: the intersection of its planes' closed

@@ -32,6 +32,8 @@ std::vector<int> hostLayout(const PnLaunchParams& params) {
       static_cast<int>(sizeof(PnOccluder)),
       static_cast<int>(sizeof(PnPatchFace)),
       static_cast<int>(sizeof(PnVisibleObject)),
+      static_cast<int>(sizeof(PnLuminancePolynomial)),
+      static_cast<int>(offsetof(PnLuminancePolynomial, order)),
   };
   int eps = 0;
   std::memcpy(&eps, &params.epsLength, sizeof eps);

@@ -83,8 +83,8 @@ TEST(LuminaireCommand, HelpExplainsTheLines) {
   }
 }
 
-// A scene with one luminaire of the area model: `--reference` evaluates it and summary.json
-// lists its model and fit; a device run stops with a message naming --reference.
+// A scene with luminaires of the area model: the device and `--reference` evaluate it, and
+// summary.json lists its model and fit.
 void writeAreaScene(const fs::path& dir) {
   std::ofstream(dir / "scene.yaml") << "penumbra: 1\n"
                                        "luminaires:\n"
@@ -123,13 +123,22 @@ TEST(LuminaireAreaModel, TheReferenceRunsItAndTheSummaryListsTheFit) {
   EXPECT_EQ(washer.at("parts"), nlohmann::json::array({3, 3}));
 }
 
-TEST(LuminaireAreaModel, ADeviceRunSaysToUseTheReference) {
+TEST(LuminaireAreaModel, TheDeviceRunsItAndAgreesWithTheReference) {
   TempDir dir("luminaire-cli");
   writeAreaScene(dir.path());
-  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --device cpu -q");
-  EXPECT_NE(r.status, 0);
-  EXPECT_TRUE(contains(r.err, "the area model is evaluated by the host reference (--reference)"))
-      << r.err;
+  const Result device = runPenumbra(dir.path(), "grid scene.yaml -o device --device cpu -q");
+  ASSERT_EQ(device.status, 0) << device.err;
+  const Result reference = runPenumbra(dir.path(), "grid scene.yaml -o reference --reference -q");
+  ASSERT_EQ(reference.status, 0) << reference.err;
+  const auto eAvg = [&](const char* out) {
+    std::ifstream in(dir.path() / out / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(in);
+    EXPECT_EQ(summary.at("luminaires").at(0).at("model"), "area");
+    return summary.at("grids").at(0).at("Eavg_lx").get<double>();
+  };
+  const double fromDevice = eAvg("device"), fromReference = eAvg("reference");
+  EXPECT_GT(fromReference, 0.0);
+  EXPECT_NEAR(fromDevice, fromReference, 1e-5 * fromReference);
 }
 
 }  // namespace

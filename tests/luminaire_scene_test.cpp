@@ -56,7 +56,7 @@ TEST(LuminaireScene, AnArrayExpandsIntoNamedInstances) {
   // rotate 90: C0 (local x) along the scene's +y, C90 along −x.
   EXPECT_TRUE((l.instances[0].toScene * Vec3::UnitX()).isApprox(Vec3::UnitY()));
   EXPECT_TRUE((l.instances[0].toScene * Vec3::UnitY()).isApprox(-Vec3::UnitX()));
-  EXPECT_EQ(l.model, LuminaireModel::Point);
+  EXPECT_EQ(l.model, LuminaireModel::Area);  // the file gives an opening (a disk)
   EXPECT_EQ(l.maintenanceFactor, 1.0);
   EXPECT_EQ(l.lampLumens, 2000.0);  // the file's
 }
@@ -145,13 +145,18 @@ TEST(LuminaireScene, TheAreaModelTakesTheFilesOpeningAndFitsItsLuminance) {
   EXPECT_FALSE(l.opening->subdivided());
 }
 
-TEST(LuminaireScene, TheAreaModelNeedsAFlatOpening) {
-  testing::TempDir dir("luminaire-scene");
-  photometry::testfiles::IesSpec point;  // width, length and height 0: a point
+// Writes dir/point.ies: a file whose opening is a point (width, length and height 0).
+void writePointIes(const fs::path& dir) {
+  photometry::testfiles::IesSpec point;
   point.vertical = photometry::testfiles::steps(0, 90, 10);
   point.horizontal = {0};
   point.candela = [](double, double) { return 100.0; };
-  std::ofstream(dir.path() / "point.ies") << photometry::testfiles::iesText(point);
+  std::ofstream(dir / "point.ies") << photometry::testfiles::iesText(point);
+}
+
+TEST(LuminaireScene, TheAreaModelNeedsAFlatOpening) {
+  testing::TempDir dir("luminaire-scene");
+  writePointIes(dir.path());
   const SceneError e = errorOf(sceneWith("  - name: p\n"
                                          "    file: point.ies\n"
                                          "    position: [0, 0, 3]\n"
@@ -160,6 +165,24 @@ TEST(LuminaireScene, TheAreaModelNeedsAFlatOpening) {
   EXPECT_EQ(e.line(), 7) << e.what();
   EXPECT_EQ(e.key(), "luminaires[0].model") << e.what();
   EXPECT_NE(std::string(e.what()).find("no flat luminous opening"), std::string::npos) << e.what();
+}
+
+TEST(LuminaireScene, TheDefaultModelIsAreaWhereTheFileGivesAFlatOpening) {
+  testing::TempDir dir("luminaire-scene");
+  writePointIes(dir.path());
+  std::filesystem::copy_file(kDataScene.parent_path() / "luminaires/lambertian-panel.ldt",
+                             dir.path() / "panel.ldt");
+  const Scene scene = parseScene(sceneWith("  - {name: p, file: point.ies, position: [0, 0, 3]}\n"
+                                           "  - {name: q, file: panel.ldt, position: [1, 0, 3]}\n"
+                                           "  - {name: r, file: panel.ldt, position: [2, 0, 3], "
+                                           "model: point}\n"),
+                                 dir.path() / "scene.yaml");
+  ASSERT_EQ(scene.luminaires.size(), 3u);
+  EXPECT_EQ(scene.luminaires[0].model, LuminaireModel::Point);
+  EXPECT_FALSE(scene.luminaires[0].opening.has_value());
+  EXPECT_EQ(scene.luminaires[1].model, LuminaireModel::Area);
+  EXPECT_TRUE(scene.luminaires[1].opening.has_value());
+  EXPECT_EQ(scene.luminaires[2].model, LuminaireModel::Point);
 }
 
 TEST(LuminaireScene, ArraysNeedWholeCountsAndPositiveSpacings) {

@@ -24,7 +24,8 @@ struct IlluminanceEngine::State {
   std::vector<FaceVolumes> volumes;  // flattenVolumes(shadows), for the patch tables
   KernelScene packed;
   compute::Program program;
-  DeviceBuffer faces, apertures, sourceVertices, occluders, planes, edges, occluderVertices;
+  DeviceBuffer faces, apertures, sourceVertices, luminances, occluders, planes, edges,
+      occluderVertices;
   std::size_t sceneBytes = 0;  // what the buffers above take on the device
   // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
   std::unique_ptr<LuminaireEngine> luminaires;
@@ -43,10 +44,10 @@ struct IlluminanceEngine::State {
     if (!options.apertures)
       for (PnSourceFace& f : packed.faces) f.aperture = -1;
     const std::vector<std::size_t> tables = {
-        compute::byteSize(packed.faces),           compute::byteSize(packed.apertures),
-        compute::byteSize(packed.sourceVertices),  compute::byteSize(packed.occluders),
-        compute::byteSize(packed.planes),          compute::byteSize(packed.edges),
-        compute::byteSize(packed.occluderVertices)};
+        compute::byteSize(packed.faces),          compute::byteSize(packed.apertures),
+        compute::byteSize(packed.sourceVertices), compute::byteSize(packed.luminances),
+        compute::byteSize(packed.occluders),      compute::byteSize(packed.planes),
+        compute::byteSize(packed.edges),          compute::byteSize(packed.occluderVertices)};
     compute::requireDeviceMemory(
         d.info(), tables, 0,
         fmt::format("the scene (source faces: {}, occluders: {})", packed.faces.size(),
@@ -57,13 +58,14 @@ struct IlluminanceEngine::State {
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
     apertures = DeviceBuffer::upload<PnAperture>(d, packed.apertures);
     sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
+    luminances = DeviceBuffer::upload<PnLuminancePolynomial>(d, packed.luminances);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
     edges = DeviceBuffer::upload<cl_int4>(d, packed.edges);
     occluderVertices = DeviceBuffer::upload<cl_float4>(d, packed.occluderVertices);
     hasLuminaires = !scene.luminaires.empty();
     if (hasLuminaires) {
-      if (!luminaires) luminaires = std::make_unique<LuminaireEngine>(d);
+      if (!luminaires) luminaires = std::make_unique<LuminaireEngine>(d, options);
       luminaires->setScene(scene, packed.origin, packed.epsLength);
     }
   }
@@ -148,7 +150,7 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
   if (state_->hasLuminaires) {
     LuminaireEngine::Result luminaires = state_->luminaires->evaluate(points);
     result.luminaires = std::move(luminaires.illuminance);
-    result.luminaireSeen = std::move(luminaires.seen);
+    result.luminaireShadow = std::move(luminaires.shadow);
     result.luminaireCount = luminaires.luminaires;
     for (std::size_t i = 0; i < result.illuminance.size(); ++i)
       result.illuminance[i] += result.luminaires[i];
@@ -325,6 +327,7 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   buffers.pointSolid = &ownBuffer;
   buffers.faces = &state_->faces;
   buffers.sourceVertices = &state_->sourceVertices;
+  buffers.luminances = &state_->luminances;
   buffers.occluders = &state_->occluders;
   buffers.planes = &state_->planes;
   buffers.edges = &state_->edges;

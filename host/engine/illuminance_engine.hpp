@@ -1,33 +1,19 @@
 #pragma once
 // Exact direct illuminance at sample points: the Lambertian sources by kernels/illuminance.cl,
-// the photometric luminaires' point model by kernels/luminaire.cl (LuminaireEngine).
+// the photometric luminaires by LuminaireEngine (the point model by kernels/luminaire.cl, the area
+// model's openings by kernels/illuminance.cl in a scene of their own).
 #include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
 
 #include "cl/device.hpp"
+#include "engine/engine_options.hpp"
 #include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
 #include "shadow/shadow_class.hpp"
 
 namespace penumbra {
-
-struct EngineOptions {
-  // Shadow volumes and face classes (PN_PATH_CULLING, docs/method.md): each sample tests only the
-  // occluders whose penumbra volume meets its patch, umbra samples get 0 at once, lit ones the
-  // plain contour integral. Off: the plain path, every sample considers every occluder; slower,
-  // the same numbers to float rounding, for comparison.
-  bool culling = true;
-  // With culling only: a window's sky on the wall's outer plane is seen through the opening
-  // (shadow/aperture.hpp), and the wall around it is skipped. Off: the reveals are occluders like
-  // any other (tests compare that with the plain path).
-  bool apertures = true;
-  // With culling only: points in a penumbra take the eight-lane penumbra path (PN_PATH_LANES,
-  // kernels/penumbra_lanes.cl). Off: the scalar path (kernels/penumbra_scalar.cl), as the plain
-  // path does.
-  bool vectorPenumbra = true;
-};
 
 struct IlluminanceResult {
   std::vector<double> illuminance;       // lx, per point, summed over all sources and luminaires
@@ -37,8 +23,8 @@ struct IlluminanceResult {
   // lx per point from the photometric luminaires (included in `illuminance`); empty when the
   // scene has none. They are white: a render adds them to every channel.
   std::vector<double> luminaires;
-  // [point * luminaireCount + l]: whether the point sees placed luminaire l (LuminaireEngine).
-  std::vector<std::uint8_t> luminaireSeen;
+  // [point * luminaireCount + l]: placed luminaire l's shadow class (LuminaireEngine::Result).
+  std::vector<ShadowClass> luminaireShadow;
   int luminaireCount = 0;
   ShadowClass shadow(std::size_t point, int source) const {
     return shadowClass[point * static_cast<std::size_t>(sourceCount) + source];

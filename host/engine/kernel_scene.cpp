@@ -10,6 +10,8 @@
 #include "geometry/nishita.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
+static_assert(sizeof(PnLuminancePolynomial) == 64,
+              "PnLuminancePolynomial layout must match kernels/shared_types.h");
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
 static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
 static_assert(sizeof(PnPatchFace) == 16, "PnPatchFace layout must match kernels/shared_types.h");
@@ -64,6 +66,30 @@ std::array<double, 4> relativeRect(const std::array<double, 4>& rect, const Aper
                                    const Relative& r) {
   const double u = a.axisU.dot(r.origin), v = a.axisV.dot(r.origin);
   return {rect[0] - u, rect[1] - u, rect[2] - v, rect[3] - v};
+}
+
+// The index of `source`'s luminance polynomial in packed.luminances (appended), or -1 for a
+// uniform luminance (a polynomial of order 0 is one: halfLuminanceOf folds its coefficient in).
+// Throws std::runtime_error beyond the kernel's order.
+int packLuminance(const Source& source, KernelScene& packed) {
+  const std::vector<double>& c = source.luminanceCoefficients;
+  if (c.size() <= 1) return -1;
+  if (c.size() > PN_MAX_LUMINANCE_TERMS)
+    throw std::runtime_error(fmt::format(
+        "source '{}': a luminance polynomial of order {}; the kernel handles at most {}",
+        source.name, c.size() - 1, PN_MAX_LUMINANCE_TERMS - 1));
+  PnLuminancePolynomial poly{};
+  poly.order = static_cast<int>(c.size()) - 1;
+  for (std::size_t k = 0; k < c.size(); ++k) poly.coefficient[k] = static_cast<float>(c[k]);
+  packed.luminances.push_back(poly);
+  return static_cast<int>(packed.luminances.size()) - 1;
+}
+
+// The factor in front of the face's contour sum: L/2, times the constant of a polynomial of
+// order 0, which is then Lambert's sum bit for bit.
+float halfLuminanceOf(const Source& source) {
+  const std::vector<double>& c = source.luminanceCoefficients;
+  return static_cast<float>(0.5 * source.luminance * (c.size() == 1 ? c[0] : 1.0));
 }
 
 PnAperture packAperture(const Aperture& a, const Relative& r) {
@@ -139,6 +165,7 @@ constexpr BufferArgument kBufferArguments[] = {
     {"point_solid", &IlluminanceBuffers::pointSolid},
     {"faces", &IlluminanceBuffers::faces},
     {"source_vertices", &IlluminanceBuffers::sourceVertices},
+    {"luminances", &IlluminanceBuffers::luminances},
     {"occluders", &IlluminanceBuffers::occluders},
     {"planes", &IlluminanceBuffers::planes},
     {"edges", &IlluminanceBuffers::edges},
@@ -196,7 +223,8 @@ KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
     f.firstVertex = static_cast<int>(packed.sourceVertices.size());
     f.vertexCount = face.size();
     for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
-    f.halfLuminance = static_cast<float>(0.5 * source.luminance);
+    f.halfLuminance = halfLuminanceOf(source);
+    f.luminance = packLuminance(source, packed);
     f.source = emitting.source;
     f.aperture = -1;
     if (emitting.aperture) {

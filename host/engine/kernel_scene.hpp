@@ -22,7 +22,8 @@ struct KernelScene {
   std::vector<PnSourceFace> faces;
   std::vector<PnAperture> apertures;  // PnSourceFace::aperture indexes these
   std::vector<cl_float4> sourceVertices;
-  std::vector<PnOccluder> occluders;  // per face, its casters in SceneShadows order
+  std::vector<PnLuminancePolynomial> luminances;  // PnSourceFace::luminance indexes these
+  std::vector<PnOccluder> occluders;              // per face, its casters in SceneShadows order
   // Occluder face planes, separating planes, penumbra planes, umbra planes.
   std::vector<cl_float4> planes;
   std::vector<cl_int4> edges;  // (from, to, left, right), local to their occluder
@@ -53,6 +54,7 @@ struct IlluminanceBuffers {
   const compute::DeviceBuffer* pointSolid = nullptr;
   const compute::DeviceBuffer* faces = nullptr;
   const compute::DeviceBuffer* sourceVertices = nullptr;
+  const compute::DeviceBuffer* luminances = nullptr;
   const compute::DeviceBuffer* occluders = nullptr;
   const compute::DeviceBuffer* planes = nullptr;
   const compute::DeviceBuffer* edges = nullptr;

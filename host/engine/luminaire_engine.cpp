@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cl/buffer.hpp"
+#include "engine/illuminance_engine.hpp"
 #include "engine/kernel_scene.hpp"
 #include "engine/luminaire_scene.hpp"
 
@@ -22,32 +23,40 @@ constexpr std::size_t kWorkGroup = 64;
 
 struct LuminaireEngine::State {
   compute::Device* device = nullptr;
+  EngineOptions options;
   compute::Program program;
   Vec3 origin = Vec3::Zero();
   PnLuminaireParams params{};
   DeviceBuffer luminaires, tables, angles, candela, solids, planes;
   std::size_t sceneBytes = 0;
+  std::vector<int> instanceOf;  // per point source, its placed instance
+  int placed = 0;               // placed instances
+  // The area model's openings (built at the first scene that has some, kept for later ones).
+  std::unique_ptr<IlluminanceEngine> openings;
+  std::vector<int> openingInstance;  // per opening source, its placed instance
 
-  explicit State(compute::Device& d)
-      : device(&d), program(d, "luminaire", illuminanceBuildOptions()) {}
+  State(compute::Device& d, const EngineOptions& o)
+      : device(&d), options(o), program(d, "luminaire", illuminanceBuildOptions()) {}
 };
 
-LuminaireEngine::LuminaireEngine(compute::Device& device)
-    : state_(std::make_unique<State>(device)) {}
+LuminaireEngine::LuminaireEngine(compute::Device& device, const EngineOptions& options)
+    : state_(std::make_unique<State>(device, options)) {}
 LuminaireEngine::~LuminaireEngine() = default;
 
 void LuminaireEngine::setScene(const Scene& scene, const Vec3& origin, float epsLength) {
   State& s = *state_;
   compute::Device& d = *s.device;
-  for (const Luminaire& luminaire : scene.luminaires) {
-    if (luminaire.model != LuminaireModel::Point) {
-      throw std::runtime_error(fmt::format(
-          "luminaire '{}': the area model is evaluated by the host reference (--reference); the "
-          "device evaluates the point model ('model: point')",
-          luminaire.name));
-    }
+  OpeningScene openings = openingScene(scene);
+  s.openingInstance = std::move(openings.instanceOf);
+  if (!s.openingInstance.empty()) {
+    if (s.openings)
+      s.openings->setScene(openings.scene);
+    else
+      s.openings = std::make_unique<IlluminanceEngine>(d, openings.scene, s.options);
   }
-  const LuminaireKernelScene packed = packLuminaires(scene, origin);
+  s.placed = placedInstanceCount(scene);
+  LuminaireKernelScene packed = packLuminaires(scene, origin);
+  s.instanceOf = std::move(packed.instanceOf);
   const std::vector<std::size_t> tables = {
       compute::byteSize(packed.luminaires), compute::byteSize(packed.tables),
       compute::byteSize(packed.angles),     compute::byteSize(packed.candela),
@@ -74,9 +83,41 @@ void LuminaireEngine::setScene(const Scene& scene, const Vec3& origin, float eps
 LuminaireEngine::Result LuminaireEngine::evaluate(std::span<const SamplePoint> points) {
   State& s = *state_;
   const std::size_t n = points.size();
-  const std::size_t count = static_cast<std::size_t>(s.params.luminaireCount);
+  const std::size_t placed = static_cast<std::size_t>(s.placed);
   Result result;
-  result.luminaires = s.params.luminaireCount;
+  result.luminaires = s.placed;
+  result.illuminance.assign(n, 0.0);
+  result.shadow.assign(n * placed, ShadowClass::Umbra);
+  if (n == 0) return result;
+  const PointSources point = evaluatePointSources(points);
+  const std::size_t sources = s.instanceOf.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    result.illuminance[i] = point.illuminance[i];
+    for (std::size_t l = 0; l < sources; ++l)
+      if (point.seen[i * sources + l])
+        result.shadow[i * placed + static_cast<std::size_t>(s.instanceOf[l])] = ShadowClass::Lit;
+  }
+  if (s.openingInstance.empty()) return result;
+  const IlluminanceResult area = s.openings->evaluate(points, true);
+  const std::size_t openings = s.openingInstance.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    result.illuminance[i] += area.illuminance[i];
+    for (std::size_t o = 0; o < openings; ++o) {
+      const std::size_t l = static_cast<std::size_t>(s.openingInstance[o]);
+      result.shadow[i * placed + l] = area.bySource[i * openings + o] > 0.0
+                                          ? area.shadow(i, static_cast<int>(o))
+                                          : ShadowClass::Umbra;
+    }
+  }
+  return result;
+}
+
+LuminaireEngine::PointSources LuminaireEngine::evaluatePointSources(
+    std::span<const SamplePoint> points) {
+  State& s = *state_;
+  const std::size_t n = points.size();
+  const std::size_t count = static_cast<std::size_t>(s.params.luminaireCount);
+  PointSources result;
   if (n == 0 || count == 0) {
     result.illuminance.assign(n, 0.0);
     result.seen.assign(n * count, 0);
@@ -88,8 +129,8 @@ LuminaireEngine::Result LuminaireEngine::evaluate(std::span<const SamplePoint> p
   batch.push_back(padded * count);
   if (!compute::fitsDevice(d.info(), batch, s.sceneBytes) && n > kWorkGroup) {
     const std::size_t half = (n / 2 + kWorkGroup - 1) / kWorkGroup * kWorkGroup;
-    Result first = evaluate(points.first(half));
-    const Result second = evaluate(points.subspan(half));
+    PointSources first = evaluatePointSources(points.first(half));
+    const PointSources second = evaluatePointSources(points.subspan(half));
     first.illuminance.insert(first.illuminance.end(), second.illuminance.begin(),
                              second.illuminance.end());
     first.seen.insert(first.seen.end(), second.seen.begin(), second.seen.end());

@@ -1,5 +1,7 @@
 #include "engine/luminaire_scene.hpp"
 
+#include "reference/opening_illuminance.hpp"
+
 static_assert(sizeof(PnCandelaTable) == 32,
               "PnCandelaTable layout must match kernels/shared_types.h");
 static_assert(sizeof(PnLuminaire) == 80, "PnLuminaire layout must match kernels/shared_types.h");
@@ -48,22 +50,56 @@ PnCandelaTable packTable(const Luminaire& luminaire, LuminaireKernelScene& packe
   return table;
 }
 
+// Whether the area model integrates `luminaire`'s opening exactly (else: the point model, at
+// its centre or over the opening's cells).
+bool integratesOpening(const Luminaire& luminaire) {
+  return luminaire.model == LuminaireModel::Area && luminaire.opening &&
+         !luminaire.opening->subdivided();
+}
+
 }  // namespace
+
+int placedInstanceCount(const Scene& scene) {
+  int count = 0;
+  for (const Luminaire& luminaire : scene.luminaires)
+    count += static_cast<int>(luminaire.instances.size());
+  return count;
+}
 
 LuminaireKernelScene packLuminaires(const Scene& scene, const Vec3& origin) {
   LuminaireKernelScene packed;
+  int placed = 0;
   for (const Luminaire& luminaire : scene.luminaires) {
+    if (integratesOpening(luminaire)) {
+      placed += static_cast<int>(luminaire.instances.size());
+      continue;
+    }
     const int table = static_cast<int>(packed.tables.size());
     packed.tables.push_back(packTable(luminaire, packed));
+    // The point model's centre, or the cells of a subdivided opening (reference/
+    // luminaire_illuminance.cpp sums the same point sources).
+    std::vector<Vec3> centres = {Vec3::Zero()};
+    if (luminaire.model == LuminaireModel::Area && luminaire.opening) {
+      const LuminaireOpening& opening = *luminaire.opening;
+      centres.clear();
+      for (int j = 0; j < opening.partsAlongWidth; ++j)
+        for (int i = 0; i < opening.partsAlongLength; ++i)
+          centres.push_back(opening.partCentre(i, j));
+    }
     for (const LuminaireInstance& instance : luminaire.instances) {
-      PnLuminaire l{};
-      l.centre = float4Of(instance.position - origin, 0.0);
-      const Mat3 toLocal = instance.toScene.transpose();
-      l.toLocal0 = float4Of(toLocal.row(0).transpose(), 0.0);
-      l.toLocal1 = float4Of(toLocal.row(1).transpose(), 0.0);
-      l.toLocal2 = float4Of(toLocal.row(2).transpose(), 0.0);
-      l.table = table;
-      packed.luminaires.push_back(l);
+      for (const Vec3& local : centres) {
+        PnLuminaire l{};
+        l.centre = float4Of(instance.position + instance.toScene * local - origin, 0.0);
+        const Mat3 toLocal = instance.toScene.transpose();
+        l.toLocal0 = float4Of(toLocal.row(0).transpose(), 0.0);
+        l.toLocal1 = float4Of(toLocal.row(1).transpose(), 0.0);
+        l.toLocal2 = float4Of(toLocal.row(2).transpose(), 0.0);
+        l.table = table;
+        l.share = static_cast<float>(1.0 / static_cast<double>(centres.size()));
+        packed.luminaires.push_back(l);
+        packed.instanceOf.push_back(placed);
+      }
+      ++placed;
     }
   }
   for (int s = 0; s < static_cast<int>(scene.solids.size()); ++s) {
@@ -87,6 +123,30 @@ LuminaireKernelScene packLuminaires(const Scene& scene, const Vec3& origin) {
     packed.solids.push_back(solid);
   }
   return packed;
+}
+
+OpeningScene openingScene(const Scene& scene) {
+  OpeningScene openings;
+  openings.scene.file = scene.file;
+  openings.scene.materials = scene.materials;
+  openings.scene.solids = scene.solids;
+  openings.scene.grids = scene.grids;  // the same bounds, so the same kernel tolerance
+  int placed = 0;
+  for (const Luminaire& luminaire : scene.luminaires) {
+    for (const LuminaireInstance& instance : luminaire.instances) {
+      if (integratesOpening(luminaire)) {
+        Source source;
+        source.name = instance.name;
+        source.faces.push_back(placedOpening(*luminaire.opening, instance));
+        source.luminance = luminaire.intensityScale;
+        source.luminanceCoefficients = luminaire.opening->fit.coefficients;
+        openings.scene.sources.push_back(std::move(source));
+        openings.instanceOf.push_back(placed);
+      }
+      ++placed;
+    }
+  }
+  return openings;
 }
 
 }  // namespace penumbra

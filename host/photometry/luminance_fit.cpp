@@ -66,6 +66,15 @@ double LuminanceFit::luminance(double cosPhi) const {
   return sum;
 }
 
+double LuminanceFit::conditioning() const {
+  constexpr int kSteps = 1000;
+  double largest = 0.0, sum = 0.0;
+  for (int i = 0; i <= kSteps; ++i)
+    largest = std::max(largest, std::abs(luminance(static_cast<double>(i) / kSteps)));
+  for (double c : coefficients) sum += std::abs(c);
+  return largest > 0.0 ? sum / largest : 1.0;
+}
+
 double LuminanceFit::intensity(double cosPhi) const {
   return cosPhi > 0.0 ? openingAreaM2 * cosPhi * luminance(cosPhi) : 0.0;
 }
@@ -77,8 +86,10 @@ LuminanceFit fitLuminance(const LightDistribution& distribution, double areaM2, 
   LuminanceFit best;
   for (int order = 0; order <= maxOrder; ++order) {
     LuminanceFit fit = fitOfOrder(nodes, areaM2, peak, order);
+    const bool integrable =
+        fit.peakRelativeError <= tolerance && fit.conditioning() <= kLuminanceConditioningLimit;
+    if (integrable) return fit;
     if (order == 0 || fit.peakRelativeError < best.peakRelativeError) best = std::move(fit);
-    if (best.peakRelativeError <= tolerance) break;
   }
   return best;
 }

@@ -20,6 +20,12 @@ namespace penumbra::photometry {
 constexpr double kLuminanceFitTolerance = 0.01;
 // The highest order tried.
 constexpr int kLuminanceFitMaxOrder = 12;
+// The largest conditioning (LuminanceFit::conditioning) the area model integrates: the kernel sums
+// Σ c_k M_k in float, each M_k good to about (order + 4) roundings of itself, so the sum is good to
+// about conditioning · (order + 4) · 2⁻²⁴ of the largest luminance: at most 3.8e-6 at order 12.
+// A fit beyond it (a narrow beam's, whose coefficients alternate in sign and reach 10⁵ times the
+// luminance) is split into parts like a fit beyond kLuminanceFitTolerance.
+constexpr double kLuminanceConditioningLimit = 4.0;
 
 struct LuminanceFit {
   std::vector<double> coefficients;  // c_0..c_order, cd/m² (the file's table, unscaled)
@@ -27,12 +33,16 @@ struct LuminanceFit {
   double peakRelativeError = 0.0;  // at the table's nodes, relative to the peak candela
 
   int order() const { return static_cast<int>(coefficients.size()) - 1; }
+  // Σ |c_k| / max |L(cos φ)| over cos φ in [0, 1]: what cancellation in the monomial sum can cost
+  // relative to the luminance (1 for a constant).
+  double conditioning() const;
   double luminance(double cosPhi) const;  // cd/m²
   double intensity(double cosPhi) const;  // cd: A cos φ L, 0 for cos φ <= 0
 };
 
-// The fit of the lowest order (0..maxOrder) whose error is within `tolerance`, else the one with
-// the least error. `areaM2` > 0.
+// The fit of the lowest order (0..maxOrder) whose error is within `tolerance` and whose
+// conditioning is within kLuminanceConditioningLimit, else the one with the least error.
+// `areaM2` > 0.
 LuminanceFit fitLuminance(const LightDistribution& distribution, double areaM2,
                           double tolerance = kLuminanceFitTolerance,
                           int maxOrder = kLuminanceFitMaxOrder);

@@ -76,8 +76,9 @@ struct Renderer::State {
   }
 
   // The interval plan's shadow classes per sample: one per source, then one per placed
-  // luminaire (Lit where the sample sees its centre, Umbra where not), so that a luminaire's
-  // hard shadow edge is never interpolated across.
+  // luminaire (LuminaireEngine::Result::shadow: the point model Lit where the sample sees its
+  // centre, Umbra where not; the area model its opening's class), so that a luminaire's shadow
+  // edge is never interpolated across.
   int classColumns() const {
     int columns = static_cast<int>(scene->sources.size());
     for (const Luminaire& l : scene->luminaires) columns += static_cast<int>(l.instances.size());
@@ -111,8 +112,7 @@ struct Renderer::State {
         }
         for (int l = 0; l < result.luminaireCount; ++l) {
           classes[i * columns + sources + l] =
-              result.luminaireSeen[local * result.luminaireCount + l] ? ShadowClass::Lit
-                                                                      : ShadowClass::Umbra;
+              result.luminaireShadow[local * result.luminaireCount + l];
         }
         if (!result.luminaires.empty()) light += Vec3::Constant(result.luminaires[local]);
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;

@@ -59,7 +59,8 @@ std::optional<LuminaireOpening> luminaireOpening(
   opening.lengthM = shape.lengthM;
   opening.widthM = shape.widthM;
   opening.fit = photometry::fitLuminance(distribution, ConvexPolygon(opening.outline).area());
-  if (opening.fit.peakRelativeError > photometry::kLuminanceFitTolerance) {
+  if (opening.fit.peakRelativeError > photometry::kLuminanceFitTolerance ||
+      opening.fit.conditioning() > photometry::kLuminanceConditioningLimit) {
     opening.partsAlongLength = partsAlong(opening.lengthM);
     opening.partsAlongWidth = partsAlong(opening.widthM);
     if (!opening.subdivided()) opening.partsAlongLength = 2;

@@ -29,7 +29,8 @@ enum class LuminaireModel { Point, Area };
 // The area model (docs/method.md, "The area model"): the flat luminous opening, centred on the
 // photometric centre in the local frame and facing the nadir, emits the fitted luminance
 // (photometry/luminance_fit.hpp) uniformly over its area, integrated exactly over the part of it
-// each point sees. Where the fit's error exceeds kLuminanceFitTolerance, the opening's bounding
+// each point sees. Where the fit's error exceeds kLuminanceFitTolerance, or its conditioning
+// kLuminanceConditioningLimit (the kernel sums the moments in float), the opening's bounding
 // rectangle is instead split into cells of at most 5 cm a side (at most 16 along each axis), each
 // a point source at its centre carrying an equal share of the file's own distribution (hard
 // shadows per cell).

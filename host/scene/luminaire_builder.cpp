@@ -27,10 +27,12 @@ Luminaire buildLuminaire(const LuminaireSpec& spec, const BuildContext& context)
   luminaire.lightOutputRatio = data.lightOutputRatio;
   luminaire.distribution = std::make_shared<const photometry::LightDistribution>(data);
   luminaire.maintenanceFactor = spec.maintenanceFactor;
-  luminaire.model = spec.model;
+  luminaire.model = spec.model.value_or(LuminaireModel::Area);
   if (luminaire.model == LuminaireModel::Area) {
     luminaire.opening = luminaireOpening(data.opening, *luminaire.distribution);
-    if (!luminaire.opening) {
+    if (!luminaire.opening && !spec.model) {
+      luminaire.model = LuminaireModel::Point;  // no flat opening: the default is the point model
+    } else if (!luminaire.opening) {
       context.fail(spec.modelWhere,
                    fmt::format("'{}' gives no flat luminous opening (its opening: {}), which the "
                                "area model needs: use 'model: point'",

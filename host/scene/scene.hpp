@@ -30,11 +30,17 @@ enum class SourceShape { Polygon, Polyhedron };
 // A Lambertian source of uniform luminance. An area source has one face; a polyhedron source
 // has all its faces (every face emits outwards). Each face's vertices run counter-clockwise
 // about its emission direction, so face.normal() is where it emits to.
+//
+// A photometric luminaire's opening (the area model, scene/luminaire.hpp) is a polygon source
+// whose luminance depends on the emitted direction e: L(e) = luminance · Σ_k c_k cos^k φ,
+// cos φ = face.normal()·e, c = luminanceCoefficients (empty: uniform). Such sources exist only
+// in the scene LuminaireEngine hands the illuminance kernel, never in a loaded scene's sources.
 struct Source {
   std::string name;
   SourceShape shape = SourceShape::Polygon;
   std::vector<ConvexPolygon> faces;
-  double luminance = 0.0;  // cd/m² (from `flux`: L = Φ / (π·A))
+  double luminance = 0.0;                     // cd/m² (from `flux`: L = Φ / (π·A))
+  std::vector<double> luminanceCoefficients;  // c_0..c_order, at most PN_MAX_LUMINANCE_TERMS
   Vec3 color = Vec3::Ones();
   double emittingArea() const;  // m², all faces
 };

@@ -132,7 +132,8 @@ struct LuminaireSpec {
   std::optional<double> fluxLm;           // overrides the file's lamp lumens
   Where fluxWhere;
   double maintenanceFactor = 1.0;
-  LuminaireModel model = LuminaireModel::Point;
+  // Absent: the area model where the file gives a flat luminous opening, else the point model.
+  std::optional<LuminaireModel> model;
   Where modelWhere;
   Where where;
 };
