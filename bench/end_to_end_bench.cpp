@@ -149,7 +149,9 @@ Run runBinary(const fs::path& scene, const fs::path& output, const std::string& 
 // estimator only.
 double kernelSeconds(const fs::path& scenePath, const std::string& device) {
   const Scene scene = loadScene(scenePath, {});
-  Estimator estimator(EstimatorOptions{device}, scene);
+  EstimatorOptions options;
+  options.device = device;
+  Estimator estimator(options, scene);
   double seconds = 0.0;
   for (const CalculationGrid& grid : scene.grids)
     seconds += streamGrid(scene, grid, estimator.function(), estimator.batchSize(), {}).seconds;
