@@ -1,6 +1,6 @@
 // penumbra's command line: parses with CLI11 and hands over to one function per subcommand.
-#include <CLI/CLI.hpp>
 #include <malloc.h>
+#include <CLI/CLI.hpp>
 
 #include "cli/devices_command.hpp"
 #include "cli/grid_command.hpp"
