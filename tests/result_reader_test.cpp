@@ -76,6 +76,42 @@ TEST(ResultReader, ReadsBackExactlyWhatWasWritten) {
     EXPECT_EQ(b.metrics.pointsInsideSolids, a.metrics.pointsInsideSolids);
     EXPECT_EQ(b.metrics.spacing, a.metrics.spacing);
   }
+  EXPECT_FALSE(read.interreflection.has_value());  // a direct-only run says so
+}
+
+// A run with interreflection reads back its solver's report: what `penumbra plot` needs to
+// draw the surfaces with the same light as the grids (the element size among it).
+TEST(ResultReader, ReadsBackTheInterreflectionReport) {
+  TempDir dir("result-reader");
+  RunReport written = awkwardRun();
+  InterreflectionReport solver;
+  solver.elements = 1046;
+  solver.elementSize = 0.35;
+  solver.nodes = 16736;
+  solver.surfaceArea = 123.25;
+  solver.residual = 7.5e-13;
+  solver.transferReused = true;
+  solver.refinementCapped = true;
+  solver.blackSolids = {"plinth", "shelf"};
+  solver.meshSeconds = 0.25;
+  solver.transferSeconds = 1.5;
+  solver.solveSeconds = 0.125;
+  written.interreflection = solver;
+  writeResults(written, dir.path());
+  const RunReport read = readResults(dir.path());
+  ASSERT_TRUE(read.interreflection.has_value());
+  const InterreflectionReport& r = *read.interreflection;
+  EXPECT_EQ(r.elements, solver.elements);
+  EXPECT_EQ(r.elementSize, solver.elementSize);
+  EXPECT_EQ(r.nodes, solver.nodes);
+  EXPECT_EQ(r.surfaceArea, solver.surfaceArea);
+  EXPECT_EQ(r.residual, solver.residual);
+  EXPECT_EQ(r.transferReused, solver.transferReused);
+  EXPECT_EQ(r.refinementCapped, solver.refinementCapped);
+  EXPECT_EQ(r.blackSolids, solver.blackSolids);
+  EXPECT_EQ(r.meshSeconds, solver.meshSeconds);
+  EXPECT_EQ(r.transferSeconds, solver.transferSeconds);
+  EXPECT_EQ(r.solveSeconds, solver.solveSeconds);
 }
 
 TEST(ResultReader, SummaryRecordsTheLayoutAndTheAbsoluteScene) {

@@ -20,6 +20,7 @@
 
 #include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/result_files.hpp"
 #include "test_device.hpp"
 #include "test_files.hpp"
@@ -172,39 +173,30 @@ double closedForm(double x, double y, double h, double luminance) {
   return std::numbers::pi * luminance * (f(x1, y1) - f(x0, y1) - f(x1, y0) + f(x0, y0));
 }
 
-TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
-  compute::Device* device = nullptr;
-  try {
-    device = &penumbra::testing::cpuDevice();
-  } catch (const std::exception& e) {
-    GTEST_SKIP() << "no OpenCL CPU device: " << e.what();
-  }
-  TempDir dir("viz-data");
-  const Scene scene = parseScene(kPanelRoom, dir.path() / "room.yaml");
-  PlotOptions options;
-  options.device = "cpu";
-  options.surfaceSpacing = 0.25;
-  options.width = 800;
-  IlluminanceEngine plotEngine(*device, scene);
-  const SurfacesPlot plot = plotSurfaces(scene, plotEngine, options, "room.yaml", dir.path());
-  EXPECT_TRUE(fs::exists(dir.path() / "surfaces.png"));
+// Every 7th point of a surfaces.vtp with the solid whose face it lies on (found here from the
+// geometry, not from the file), and the file's E and L there.
+struct SurfaceSamples {
+  vtkIdType total = 0;  // points in the file
+  std::vector<SamplePoint> points;
+  std::vector<double> illuminance, luminance;  // lx, cd/m²
+};
 
+SurfaceSamples readSurfaceSamples(const fs::path& vtp, const Scene& scene) {
+  SurfaceSamples samples;
   auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-  reader->SetFileName((dir.path() / "surfaces.vtp").string().c_str());
+  reader->SetFileName(vtp.string().c_str());
   reader->Update();
   vtkPolyData* surfaces = reader->GetOutput();
-  ASSERT_EQ(surfaces->GetNumberOfPoints(), static_cast<vtkIdType>(plot.points));
   vtkDataArray* e = surfaces->GetPointData()->GetArray("E_lx");
   vtkDataArray* l = surfaces->GetPointData()->GetArray("L_cd_m2");
   vtkDataArray* normals = surfaces->GetPointData()->GetNormals();
-  ASSERT_TRUE(e && l && normals);
-
-  // Each point with the solid whose face it lies on, found here from the geometry.
+  if (!(e && l && normals)) {
+    ADD_FAILURE() << vtp << " lacks E_lx, L_cd_m2 or normals";
+    return samples;
+  }
+  samples.total = surfaces->GetNumberOfPoints();
   const double tolerance = 1e-6 * scene.size();
-  std::vector<SamplePoint> points;
-  std::vector<vtkIdType> ids;
-  int floorPoints = 0;
-  for (vtkIdType i = 0; i < surfaces->GetNumberOfPoints(); i += 7) {
+  for (vtkIdType i = 0; i < samples.total; i += 7) {
     SamplePoint p;
     surfaces->GetPoint(i, p.position.data());
     normals->GetTuple(i, p.normal.data());
@@ -214,17 +206,51 @@ TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
         p.solid = s;
       }
     }
-    ASSERT_GE(p.solid, 0) << "point " << i << " lies on no face";
-    points.push_back(p);
-    ids.push_back(i);
+    if (p.solid < 0) ADD_FAILURE() << "point " << i << " lies on no face";
+    samples.points.push_back(p);
+    samples.illuminance.push_back(e->GetTuple1(i));
+    samples.luminance.push_back(l->GetTuple1(i));
+  }
+  return samples;
+}
+
+// The panel room's surfaces sampled 0.25 m apart, drawn 800 px wide, on the CPU device.
+PlotOptions panelRoomPlotOptions() {
+  PlotOptions options;
+  options.device = "cpu";
+  options.surfaceSpacing = 0.25;
+  options.width = 800;
+  return options;
+}
+
+TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
+  compute::Device* device = nullptr;
+  try {
+    device = &penumbra::testing::cpuDevice();
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << e.what();
+  }
+  TempDir dir("viz-data");
+  const Scene scene = parseScene(kPanelRoom, dir.path() / "room.yaml");
+  const PlotOptions options = panelRoomPlotOptions();
+  IlluminanceEngine plotEngine(*device, scene);
+  const SurfacesPlot plot = plotSurfaces(scene, directLight(plotEngine), "direct light only",
+                                         options, "room.yaml", dir.path());
+  EXPECT_TRUE(fs::exists(dir.path() / "surfaces.png"));
+
+  const SurfaceSamples read = readSurfaceSamples(dir.path() / "surfaces.vtp", scene);
+  ASSERT_EQ(read.total, static_cast<vtkIdType>(plot.points));
+  const std::vector<SamplePoint>& points = read.points;
+  int floorPoints = 0;
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const SamplePoint& p = points[k];
     const Vec3& q = p.position;
     // On the floor, in the open, beyond the table's shadow: the closed form applies.
     if (scene.solids[p.solid].name == "room.floor" && p.normal.z() > 0.5 && q.x() > 2.5 &&
         q.x() < 3.8 && q.y() > 2.5 && q.y() < 3.8) {
-      EXPECT_NEAR(e->GetTuple1(i), closedForm(q.x(), q.y(), 2.99, 1000.0), 1e-4 * e->GetTuple1(i))
-          << q.transpose();
-      EXPECT_NEAR(l->GetTuple1(i), 0.2 * e->GetTuple1(i) / std::numbers::pi,
-                  1e-9 * e->GetTuple1(i));
+      const double e = read.illuminance[k];
+      EXPECT_NEAR(e, closedForm(q.x(), q.y(), 2.99, 1000.0), 1e-4 * e) << q.transpose();
+      EXPECT_NEAR(read.luminance[k], 0.2 * e / std::numbers::pi, 1e-9 * e);
       ++floorPoints;
     }
   }
@@ -233,10 +259,55 @@ TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
   const std::vector<double> expected = engine.illuminance(points);
   int lit = 0;
   for (std::size_t k = 0; k < points.size(); ++k) {
-    EXPECT_EQ(e->GetTuple1(ids[k]), expected[k]) << points[k].position.transpose();
+    EXPECT_EQ(read.illuminance[k], expected[k]) << points[k].position.transpose();
     if (expected[k] > 0.0) ++lit;
   }
   EXPECT_GT(lit, 20);  // not a comparison of zeros
+}
+
+// With interreflection the surfaces carry the total: what the run's estimator gives at each
+// point (the grids' numbers), at least the direct light everywhere, and light on the ceiling,
+// which the downward panel does not reach directly; L = ρ·E/π of the total.
+TEST(SurfacesFile, WithInterreflectionTheSurfacesCarryTheTotal) {
+  try {
+    penumbra::testing::cpuDevice();
+  } catch (const std::exception& e) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << e.what();
+  }
+  TempDir dir("viz-data");
+  const Scene scene = parseScene(kPanelRoom, dir.path() / "room.yaml");
+  EstimatorOptions total;
+  total.device = "cpu";
+  Estimator plotEstimator(total, scene);
+  const PlotOptions options = panelRoomPlotOptions();
+  const PointLight light = [&](std::span<const SamplePoint> points) {
+    return plotEstimator.illuminance(points).total;
+  };
+  const SurfacesPlot plot = plotSurfaces(scene, light, "total (direct + interreflected)", options,
+                                         "room.yaml", dir.path());
+  const SurfaceSamples read = readSurfaceSamples(dir.path() / "surfaces.vtp", scene);
+  ASSERT_EQ(read.total, static_cast<vtkIdType>(plot.points));
+
+  Estimator estimator(total, scene);
+  const PointIlluminance expected = estimator.illuminance(read.points);
+  ASSERT_EQ(expected.direct.size(), read.points.size());
+  int ceiling = 0;
+  for (std::size_t k = 0; k < read.points.size(); ++k) {
+    const SamplePoint& p = read.points[k];
+    const double e = read.illuminance[k];
+    EXPECT_NEAR(e, expected.total[k], 1e-9 * expected.total[k]) << p.position.transpose();
+    EXPECT_GE(e, expected.direct[k]) << p.position.transpose();
+    const Vec3& q = p.position;
+    const bool inRoom = q.x() > 0.05 && q.x() < 3.95 && q.y() > 0.05 && q.y() < 3.95;
+    if (scene.solids[p.solid].name == "room.ceiling" && p.normal.z() < -0.5 && inRoom) {
+      EXPECT_EQ(expected.direct[k], 0.0);
+      EXPECT_GT(e, 1.0) << p.position.transpose();  // lx, reflected by the floor and walls
+      const double rhoY = 0.2126 * 0.8 + 0.7152 * 0.7 + 0.0722 * 0.6;  // paint's luminance factor
+      EXPECT_NEAR(read.luminance[k], rhoY * e / std::numbers::pi, 1e-9 * e);
+      ++ceiling;
+    }
+  }
+  EXPECT_GT(ceiling, 3);
 }
 
 }  // namespace

@@ -47,7 +47,7 @@ class OfficeBands : public ::testing::Test {
     engine_ = new IlluminanceEngine(cpuDevice(), *scene_);
     view_ = scene_->views.front();
     faces_ = new std::vector<viz::FaceBands>(
-        viz::viewFaceBands(*scene_, view_, *engine_, levels_, 12, 0.0));
+        viz::viewFaceBands(*scene_, view_, viz::directLight(*engine_), levels_, 12, 0.0));
   }
   static void TearDownTestSuite() {
     delete faces_;
@@ -141,7 +141,7 @@ TEST(GridBands, TheWorkPlaneIsTiledAndDrawn) {
   const std::vector<double> e = engine.illuminance(points);
   testing::TempDir dir("penumbra-isobands");
   const viz::IsobandFigure figure =
-      viz::writeGridIsobands(grid, e, engine, 12, dir.path() / "work-plane.svg");
+      viz::writeGridIsobands(grid, e, viz::directLight(engine), 12, dir.path() / "work-plane.svg");
   EXPECT_GT(figure.polygons, 0u);
   EXPECT_GT(figure.contourSegments, 0u);
   const std::string svg = testing::readText(dir.path() / "work-plane.svg");
@@ -157,7 +157,7 @@ TEST_F(OfficeBands, TheSvgShowsWhatTheRenderShows) {
   View view = view_;
   view.width = 320;
   view.height = 180;
-  viz::writeViewIsobands(*scene_, view, *engine_, 12, dir.path() / "view.svg");
+  viz::writeViewIsobands(*scene_, view, viz::directLight(*engine_), 12, dir.path() / "view.svg");
   const std::string command = "rsvg-convert '" + (dir.path() / "view.svg").string() + "' -o '" +
                               (dir.path() / "view.png").string() + "'";
   ASSERT_EQ(std::system(command.c_str()), 0);
@@ -167,7 +167,7 @@ TEST_F(OfficeBands, TheSvgShowsWhatTheRenderShows) {
   const RenderedView raster = renderer.render(view, RenderOptions{1, 1, {}});
   const std::vector<double> levels = [&] {
     std::vector<double> l;
-    viz::viewFaceBands(*scene_, view, *engine_, l, 12, 0.0);
+    viz::viewFaceBands(*scene_, view, viz::directLight(*engine_), l, 12, 0.0);
     return l;
   }();
   const int bandCount = static_cast<int>(levels.size()) + 1;

@@ -18,17 +18,18 @@ std::string CasePlots::unavailable() const {
 
 std::vector<std::string> CasePlots::write(const Scene& scene, const RunReport& report,
                                           const std::filesystem::path& directory) {
-  const SurfaceEngine surfaceEngine = [&]() -> IlluminanceEngine& {
-    if (!engine_) {
-      device_ = std::make_unique<compute::Device>(compute::Device::select(options_.device));
-      engine_ = std::make_unique<IlluminanceEngine>(*device_, scene);
-    } else {
-      engine_->setScene(scene);  // asked once per case: the case's scene replaces the last one
-    }
-    return *engine_;
+  bool current = false;  // estimator_ answers for this case's scene
+  const PointLight light = [&](std::span<const SamplePoint> points) {
+    if (!estimator_)
+      estimator_ =
+          std::make_unique<Estimator>(plotEstimatorOptions(report, options_.device), scene);
+    else if (!current)
+      estimator_->setScene(scene);  // the case's scene replaces the last one
+    current = true;
+    return estimator_->illuminance(points).total;
   };
   std::vector<std::string> images;
-  for (const PlotFile& file : drawPlots(report, scene, surfaceEngine, options_, directory)) {
+  for (const PlotFile& file : drawPlots(report, scene, light, options_, directory)) {
     if (file.image) images.push_back(file.name);
   }
   return images;

@@ -7,8 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cl/device.hpp"
-#include "engine/illuminance_engine.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/case_output.hpp"
 #include "viz/plot_options.hpp"
 
@@ -30,10 +29,10 @@ class CasePlots : public CaseOutputWriter {
 
  private:
   PlotOptions options_;
-  // Opened at the first case with solids and kept: the program is built once per sweep, as the
-  // runner does for the grids; each case's scene replaces the previous one on it.
-  std::unique_ptr<compute::Device> device_;
-  std::unique_ptr<IlluminanceEngine> engine_;
+  // Opened at the first case that needs it and kept: the program is built once per sweep, as the
+  // runner does for the grids, and a case that keeps the geometry reuses the interreflection's
+  // transfer; each case's scene replaces the previous one on it.
+  std::unique_ptr<Estimator> estimator_;
 };
 
 }  // namespace penumbra::viz

@@ -276,9 +276,8 @@ std::vector<double> isobandLevels(double eMax, int bands) {
   return levels;
 }
 
-std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view,
-                                     IlluminanceEngine& engine, std::vector<double>& levels,
-                                     int bands, double spacing) {
+std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view, const PointLight& light,
+                                     std::vector<double>& levels, int bands, double spacing) {
   if (spacing <= 0.0) spacing = std::max(scene.size(), 1.0) / 50.0;
   const double tolerance = Tolerance::kRelativeInput * std::max(scene.size(), 1.0);
   std::vector<FaceBands> faces;
@@ -309,7 +308,7 @@ std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view,
     for (const Vec3& v : face.mesh.vertices)
       points.push_back(SamplePoint{
           v, scene.solids[face.solid].shape.faces()[face.face].plane.normal, face.solid});
-  const std::vector<double> e = engine.illuminance(points);
+  const std::vector<double> e = light(points);
   std::size_t next = 0;
   double eMax = 0.0;
   for (FaceBands& face : faces) {
@@ -324,16 +323,16 @@ std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view,
     face.bands = isoBands(face.mesh, face.illuminance, levels, [&](std::span<const Vec3> at) {
       std::vector<SamplePoint> probes;
       for (const Vec3& p : at) probes.push_back(SamplePoint{p, normal, solid});
-      return engine.illuminance(probes);
+      return light(probes);
     });
   }
   return faces;
 }
 
-IsobandFigure writeViewIsobands(const Scene& scene, const View& view, IlluminanceEngine& engine,
+IsobandFigure writeViewIsobands(const Scene& scene, const View& view, const PointLight& light,
                                 int bands, const std::filesystem::path& svg, double spacing) {
   IsobandFigure figure;
-  std::vector<FaceBands> faces = viewFaceBands(scene, view, engine, figure.levels, bands, spacing);
+  std::vector<FaceBands> faces = viewFaceBands(scene, view, light, figure.levels, bands, spacing);
   const Camera camera = Camera::forView(view, 1);
   const double nearDepth = 1e-3 * std::max(scene.size(), 1.0);
   // The part of a polygon in front of the eye, projected to pixels.
@@ -423,18 +422,18 @@ DisplayImage bandedRaster(const RenderedView& rendered, const Scene& scene,
 }
 
 IsobandFigure writeViewIsobandFiles(const Scene& scene, const RenderedView& rendered,
-                                    IlluminanceEngine& engine, int bands,
+                                    const PointLight& light, int bands,
                                     const std::filesystem::path& folder) {
   const std::string stem = viewFileStem(rendered.view.name);
   const IsobandFigure figure =
-      writeViewIsobands(scene, rendered.view, engine, bands, folder / (stem + ".svg"));
+      writeViewIsobands(scene, rendered.view, light, bands, folder / (stem + ".svg"));
   writePng(folder / (stem + ".isobands.png"), bandedRaster(rendered, scene, figure.levels),
            {{"penumbra:view", rendered.view.name}, {"penumbra:units", "band colours of E (lx)"}});
   return figure;
 }
 
 IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const double> illuminance,
-                                IlluminanceEngine& engine, int bands,
+                                const PointLight& light, int bands,
                                 const std::filesystem::path& svg, int widthPx) {
   if (grid.kind == GridKind::Points || grid.columns < 2 || grid.rows < 2) {
     throw std::invalid_argument("iso-bands need a planar grid of at least 2 × 2 points");
@@ -456,7 +455,7 @@ IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const dou
       isoBands(mesh, illuminance, figure.levels, [&](std::span<const Vec3> points) {
         std::vector<SamplePoint> probes;
         for (const Vec3& p : points) probes.push_back(SamplePoint{p, normal, -1});
-        return engine.illuminance(probes);
+        return light(probes);
       });
   figure.polygons = result.polygons.size();
   figure.contourSegments = result.contourSegments.size();

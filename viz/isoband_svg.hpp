@@ -9,10 +9,10 @@
 #include <span>
 #include <vector>
 
-#include "engine/illuminance_engine.hpp"
 #include "grid/iso_bands.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene.hpp"
+#include "viz/point_light.hpp"
 #include "viz/rgb.hpp"
 
 namespace penumbra::viz {
@@ -28,7 +28,7 @@ struct IsobandFigure {
 };
 
 // `spacing` (m): the mesh on each face (0: a 50th of the scene's size).
-IsobandFigure writeViewIsobands(const Scene& scene, const View& view, IlluminanceEngine& engine,
+IsobandFigure writeViewIsobands(const Scene& scene, const View& view, const PointLight& light,
                                 int bands, const std::filesystem::path& svg, double spacing = 0.0);
 
 // The raster counterpart of the drawing: each pixel of a render in the colour of its E's band
@@ -39,12 +39,12 @@ DisplayImage bandedRaster(const RenderedView& rendered, const Scene& scene,
 // <view>.svg (writeViewIsobands) and <view>.isobands.png (bandedRaster, the same levels) into
 // `folder`.
 IsobandFigure writeViewIsobandFiles(const Scene& scene, const RenderedView& rendered,
-                                    IlluminanceEngine& engine, int bands,
+                                    const PointLight& light, int bands,
                                     const std::filesystem::path& folder);
 
 // A planar grid (rows × columns of points) with its E (lx) per point, in plan.
 IsobandFigure writeGridIsobands(const CalculationGrid& grid, std::span<const double> illuminance,
-                                IlluminanceEngine& engine, int bands,
+                                const PointLight& light, int bands,
                                 const std::filesystem::path& svg, int widthPx = 1200);
 
 // The faces of a view as the drawing has them (exposed for the tests): per convex piece of a face
@@ -57,8 +57,7 @@ struct FaceBands {
   std::vector<double> illuminance;
   IsoBands bands;
 };
-std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view,
-                                     IlluminanceEngine& engine, std::vector<double>& levels,
-                                     int bands, double spacing);
+std::vector<FaceBands> viewFaceBands(const Scene& scene, const View& view, const PointLight& light,
+                                     std::vector<double>& levels, int bands, double spacing);
 
 }  // namespace penumbra::viz

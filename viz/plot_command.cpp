@@ -5,12 +5,12 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
+#include <memory>
 #include <stdexcept>
 
 #include "cl/device.hpp"
 #include "cli/exit_status.hpp"
-#include "engine/illuminance_engine.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/result_reader.hpp"
 #include "output/staged_directory.hpp"
 #include "scene/scene_loader.hpp"
@@ -54,22 +54,20 @@ int run(const PlotOptions& options) {
   // The scene as the run computed it: with its parameter values (`grid --set`), not the defaults.
   const Scene scene = loadScene(results.sceneFile, results.parameters);
 
-  // The device is opened only when the surfaces need it (a scene with solids), and only once.
-  std::optional<compute::Device> device;
-  std::optional<IlluminanceEngine> engine;
-  const SurfaceEngine surfaceEngine = [&]() -> IlluminanceEngine& {
-    if (!engine) {
-      device.emplace(compute::Device::select(options.device));
-      engine.emplace(*device, scene);
-    }
-    return *engine;
+  // The device is opened (and the interreflection solved) only when the surfaces or the
+  // iso-bands need it, and only once.
+  std::unique_ptr<Estimator> estimator;
+  const PointLight light = [&](std::span<const SamplePoint> points) {
+    if (!estimator)
+      estimator = std::make_unique<Estimator>(plotEstimatorOptions(results, options.device), scene);
+    return estimator->illuminance(points).total;
   };
   const PlotProgress progress = [&](const std::string& what) {
     if (!options.quiet) fmt::print(stderr, "penumbra: {}\n", what);
   };
   StagedDirectory staged(options.folder);
   const std::vector<PlotFile> written =
-      drawPlots(results, scene, surfaceEngine, options, staged.staging(), progress);
+      drawPlots(results, scene, light, options, staged.staging(), progress);
   staged.commit();
   if (!options.quiet) {
     for (const PlotFile& file : written) fmt::print("{}\n", file.description);

@@ -103,9 +103,21 @@ std::string plotSceneName(const fs::path& sceneFile, const ParameterValues& valu
   return changed.empty() ? name : name + " with " + describeParameters(changed);
 }
 
-std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
-                                const SurfaceEngine& surfaceEngine, const PlotOptions& options,
-                                const fs::path& directory, const PlotProgress& progress) {
+EstimatorOptions plotEstimatorOptions(const RunReport& run, const std::string& device) {
+  EstimatorOptions estimator;
+  estimator.device = device;
+  estimator.interreflection = run.interreflection.has_value();
+  if (run.interreflection) estimator.mesh.elementSize = run.interreflection->elementSize;
+  return estimator;
+}
+
+std::string plotLightName(const RunReport& run) {
+  return run.interreflection ? "total (direct + interreflected)" : "direct light only";
+}
+
+std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const PointLight& light,
+                                const PlotOptions& options, const fs::path& directory,
+                                const PlotProgress& progress) {
   // The scene's own order of parameters (summary.json keeps them sorted by name).
   const std::string sceneName = plotSceneName(run.sceneFile, scene.parameters);
   const bool withSurfaces = !scene.solids.empty();
@@ -120,8 +132,8 @@ std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
                        [&](const CalculationGrid& g) { return g.name == grid.name; });
       if (planar == scene.grids.end()) continue;
       const std::string svg = gridFileStem(grid.name) + ".svg";
-      const IsobandFigure figure = writeGridIsobands(*planar, grid.illuminance, surfaceEngine(),
-                                                     options.isobands, directory / svg);
+      const IsobandFigure figure =
+          writeGridIsobands(*planar, grid.illuminance, light, options.isobands, directory / svg);
       written.push_back({svg,
                          fmt::format("{} ({} bands, {} polygons)", svg, figure.levels.size() + 1,
                                      figure.polygons),
@@ -131,7 +143,7 @@ std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
   if (withSurfaces) {
     if (progress) progress("illuminance on the room's surfaces");
     const SurfacesPlot surfaces =
-        plotSurfaces(scene, surfaceEngine(), options, sceneName, directory);
+        plotSurfaces(scene, light, plotLightName(run), options, sceneName, directory);
     written.push_back(
         {"surfaces.vtp",
          fmt::format("surfaces.vtp ({} points, {} m apart)", surfaces.points, surfaces.spacing),

@@ -7,10 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "engine/illuminance_engine.hpp"
 #include "grid/run_report.hpp"
+#include "illuminance/estimator.hpp"
 #include "scene/scene.hpp"
 #include "viz/plot_options.hpp"
+#include "viz/point_light.hpp"
 
 namespace penumbra::viz {
 
@@ -25,9 +26,13 @@ struct PlotFile {
 // std::runtime_error when two would share a name (a grid called "surfaces").
 std::vector<std::string> plotFileNames(const RunReport& run, bool withSurfaces);
 
-// Gives the engine for E on the room's surfaces, holding the scene being plotted; asked only
-// when the scene has solids.
-using SurfaceEngine = std::function<IlluminanceEngine&()>;
+// The estimator that computes E on the room's surfaces and refines the iso-bands as `run` computed
+// its grids: interreflection with the run's element size where the run had it, direct light
+// otherwise; on `device`.
+EstimatorOptions plotEstimatorOptions(const RunReport& run, const std::string& device);
+// What the plots' E includes, for their titles: "total (direct + interreflected)" or "direct
+// light only".
+std::string plotLightName(const RunReport& run);
 // Told the name of what is drawn next (the command's progress lines); may be empty.
 using PlotProgress = std::function<void(const std::string& what)>;
 
@@ -38,11 +43,11 @@ using PlotProgress = std::function<void(const std::string& what)>;
 std::string plotSceneName(const std::filesystem::path& sceneFile, const ParameterValues& values);
 
 // Draws every plot of `run` into the existing `directory`. `scene` is the run's scene, loaded
-// with the run's parameter values. Throws std::runtime_error (clashing names, files) and
-// std::invalid_argument (options).
-std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene,
-                                const SurfaceEngine& surfaceEngine, const PlotOptions& options,
-                                const std::filesystem::path& directory,
+// with the run's parameter values; `light` answers for it (plotEstimatorOptions) and is asked
+// only when the scene has solids or iso-bands are drawn. Throws std::runtime_error (clashing
+// names, files) and std::invalid_argument (options).
+std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const PointLight& light,
+                                const PlotOptions& options, const std::filesystem::path& directory,
                                 const PlotProgress& progress = {});
 
 }  // namespace penumbra::viz

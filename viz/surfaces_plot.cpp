@@ -20,15 +20,16 @@ double surfaceLegendTop(std::vector<double> illuminance) {
   return illuminance[k];
 }
 
-SurfacesPlot plotSurfaces(const Scene& scene, IlluminanceEngine& engine, const PlotOptions& options,
-                          const std::string& sceneName, const std::filesystem::path& directory) {
+SurfacesPlot plotSurfaces(const Scene& scene, const PointLight& light, const std::string& lightName,
+                          const PlotOptions& options, const std::string& sceneName,
+                          const std::filesystem::path& directory) {
   SurfacesPlot result;
   result.spacing =
       options.surfaceSpacing > 0.0 ? options.surfaceSpacing : autoSurfaceSpacing(scene);
   const SurfaceMesh mesh = sampleSurfaces(scene, result.spacing);
   result.points = mesh.points.size();
 
-  const std::vector<double> illuminance = engine.illuminance(mesh.points);
+  const std::vector<double> illuminance = light(mesh.points);
   const vtkSmartPointer<vtkPolyData> surfaces = surfacePolyData(scene, mesh, illuminance);
   writePolyDataFile(surfaces, directory / "surfaces.vtp");
 
@@ -39,10 +40,9 @@ SurfacesPlot plotSurfaces(const Scene& scene, IlluminanceEngine& engine, const P
   }
   style.scale = colourScale(options.legend, darkest, surfaceLegendTop(illuminance));
   style.width = options.width;
-  style.subtitle = fmt::format(
-      "{} · faces sampled every {} m ({} points) · direct light only · L = ρ·E/π in "
-      "surfaces.vtp",
-      sceneName, result.spacing, result.points);
+  style.subtitle =
+      fmt::format("{} · faces sampled every {} m ({} points) · E {} · L = ρ·E/π in surfaces.vtp",
+                  sceneName, result.spacing, result.points, lightName);
   result.width = style.width;
   result.height = drawSurfaces(scene, surfaces, style, directory / "surfaces.png");
   return result;

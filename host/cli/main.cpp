@@ -75,7 +75,8 @@ int main(int argc, char** argv) {
                             penumbra::compute::Device& device, int bands,
                             const std::filesystem::path& folder) {
     penumbra::IlluminanceEngine engine(device, scene);
-    penumbra::viz::writeViewIsobandFiles(scene, rendered, engine, bands, folder);
+    penumbra::viz::writeViewIsobandFiles(scene, rendered, penumbra::viz::directLight(engine), bands,
+                                         folder);
   };
 
   penumbra::SweepOptions sweep;

@@ -158,6 +158,32 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
   }
 }
 
+namespace {
+
+// The solver's report as writeSummary wrote it (result_files.cpp: interreflectionJson).
+InterreflectionReport readInterreflection(const nlohmann::json& summary) {
+  const nlohmann::json& j = summary.at("interreflection");
+  InterreflectionReport r;
+  r.elements = j.at("elements").get<std::size_t>();
+  r.elementSize = j.at("element_size_m").get<double>();
+  r.nodes = j.value("quadrature_nodes", std::size_t{0});
+  r.surfaceArea = j.value("surface_area_m2", 0.0);
+  r.residual = j.value("relative_residual", 0.0);
+  r.transferReused = j.value("transfer_reused", false);
+  r.refinementCapped = j.value("refinement_capped", false);
+  for (const nlohmann::json& name : j.value("solids_without_material", nlohmann::json::array()))
+    r.blackSolids.push_back(name.get<std::string>());
+  if (j.contains("timing")) {
+    const nlohmann::json& timing = j["timing"];
+    r.meshSeconds = timing.value("mesh_s", 0.0);
+    r.transferSeconds = timing.value("transfer_s", 0.0);
+    r.solveSeconds = timing.value("solve_s", 0.0);
+  }
+  return r;
+}
+
+}  // namespace
+
 RunReport readResults(const fs::path& directory) {
   const nlohmann::json summary = readSummary(directory / "summary.json");
   RunReport run;
@@ -176,6 +202,7 @@ RunReport readResults(const fs::path& directory) {
       run.setupSeconds = timing.value("setup_s", 0.0);
       run.totalSeconds = timing.value("total_s", 0.0);
     }
+    if (summary.contains("interreflection")) run.interreflection = readInterreflection(summary);
     for (const nlohmann::json& entry : summary.at("grids")) {
       run.grids.push_back(readGrid(entry, directory));
     }
