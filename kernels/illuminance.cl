@@ -14,8 +14,11 @@
  * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
  * an occluder may block), written source by source with row length params.sourceStride.
  * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. params.paths
- * selects the path (PN_PATH_*). The host binds these arguments by name and in this order
- * (engine/kernel_scene.cpp; tests/launch_interface_test.cpp holds the two together). */
+ * selects the path (PN_PATH_*). With params.linked, work-item g takes only the faces
+ * link_faces[k], k in [link_start[g], link_start[g + 1]) (a link: a face and the work-item's
+ * points), its patch entry is patch_faces[k], and E from each link alone is written at
+ * illuminance_lx[k · PN_LANES + lane]; no classes. The host binds these arguments by name and in
+ * this order (engine/kernel_scene.cpp; tests/launch_interface_test.cpp holds the two together). */
 
 __kernel void illuminance(
     const PnLaunchParams params, __global const float* point_x, __global const float* point_y,
@@ -26,7 +29,8 @@ __kernel void illuminance(
     __global const float4* planes, __global const int4* edges,
     __global const float4* occluder_vertices, __global const PnAperture* apertures,
     __global const PnPatchFace* patch_faces, __global const int* candidates,
-    __global float* illuminance_lx, __global int* errors, __global uchar* classes) {
+    __global const int* link_start, __global const int* link_faces, __global float* illuminance_lx,
+    __global int* errors, __global uchar* classes) {
   const PnSceneTables tables = {faces, source_vertices,   luminances, occluders,   planes,
                                 edges, occluder_vertices, apertures,  patch_faces, candidates};
   const bool culling = (params.paths & PN_PATH_CULLING) != 0;
@@ -53,9 +57,12 @@ __kernel void illuminance(
   PnSum8 e_total = {0.0f, 0.0f}, e_source = {0.0f, 0.0f};
   int8 reaches = 0, blocked = 0; /* per source, reset after its last face */
   int error = 0;
-  for (int f = 0; f < params.faceCount; ++f) {
+  const int first_link = params.linked ? link_start[g] : 0;
+  const int end_link = params.linked ? link_start[g + 1] : params.faceCount;
+  for (int k = first_link; k < end_link; ++k) {
+    const int f = params.linked ? link_faces[k] : k;
     PnSourceFace face = tables.faces[f];
-    PnPatchFace pf = tables.patchFaces[g * params.faceCount + f];
+    PnPatchFace pf = tables.patchFaces[params.linked ? (size_t)k : g * params.faceCount + f];
     if (pf.faceClass == PN_CLASS_UMBRA) /* the host found every lane in one occluder's umbra */
       blocked |= ((int8)(pf.facingLanes) >> (int8)(0, 1, 2, 3, 4, 5, 6, 7)) & 1;
     else if (pf.faceClass != PN_CLASS_C) { /* class C: nothing from this face (Nishita eq. 3) */
@@ -137,7 +144,10 @@ __kernel void illuminance(
       reaches |= facing & ~t.umbra;
       blocked |= facing & (t.shaded | t.umbra);
     }
-    if (f + 1 == params.faceCount || tables.faces[f + 1].source != face.source) {
+    if (params.linked) {
+      vstore8(e_source.s + e_source.c, k, illuminance_lx);
+      e_source.s = e_source.c = 0.0f;
+    } else if (f + 1 == params.faceCount || tables.faces[f + 1].source != face.source) {
       int8 cls = (reaches & 1) | ((blocked & 1) << 1);
       vstore8(convert_uchar8(cls), 0,
               classes + (size_t)face.source * params.sourceStride + g * PN_LANES);
@@ -151,6 +161,6 @@ __kernel void illuminance(
       blocked = 0;
     }
   }
-  if (!params.bySource) vstore8(e_total.s + e_total.c, g, illuminance_lx);
+  if (!params.bySource && !params.linked) vstore8(e_total.s + e_total.c, g, illuminance_lx);
   errors[g] = error;
 }

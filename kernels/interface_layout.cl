@@ -14,6 +14,7 @@ __kernel void interface_layout(const PnLaunchParams params, __global int* out) {
   out[n++] = (int)__builtin_offsetof(PnLaunchParams, paths);
   out[n++] = (int)__builtin_offsetof(PnLaunchParams, bySource);
   out[n++] = (int)__builtin_offsetof(PnLaunchParams, sourceStride);
+  out[n++] = (int)__builtin_offsetof(PnLaunchParams, linked);
   out[n++] = (int)sizeof(PnSourceFace);
   out[n++] = (int)sizeof(PnAperture);
   out[n++] = (int)sizeof(PnOccluder);
@@ -26,5 +27,6 @@ __kernel void interface_layout(const PnLaunchParams params, __global int* out) {
   out[n++] = params.paths;
   out[n++] = params.bySource;
   out[n++] = params.sourceStride;
+  out[n++] = params.linked;
   out[0] = n - 1;
 }

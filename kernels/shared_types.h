@@ -113,7 +113,8 @@ typedef struct {
   pn_int paths;        /* PN_PATH_* bits; none: the plain path */
   pn_int bySource;     /* 1: E per source, [source][padded point]; 0: E summed per point */
   pn_int sourceStride; /* the padded point count: the row length of per-source outputs */
-  pn_int pad1, pad2, pad3;
+  pn_int linked;       /* 1: each work-item takes its own list of faces (kernels/illuminance.cl) */
+  pn_int pad2, pad3;
 } PnLaunchParams;
 
 /* The paths of a launch. Without PN_PATH_CULLING, the plain path: every occluder at every

@@ -187,23 +187,30 @@ TEST(Interreflection, BoxRoomAgainstCollocation) {
 
   IlluminanceEngine direct(cpuDevice(), scene);
   const std::vector<double> e0 = direct.illuminance(points);
-  double previous = INFINITY;
-  for (double size : {0.5, 0.25}) {
-    MeshOptions options;
-    options.elementSize = size;
-    Interreflection solved(cpuDevice(), scene, direct, options);
-    const std::vector<double> indirect = solved.indirect(points);
-    double worst = 0.0;
-    for (std::size_t k = 0; k < points.size(); ++k)
-      worst = std::max(worst, std::abs(e0[k] + indirect[k] - limit[k]) / limit[k]);
-    std::printf("element size %.3f m: %zu elements, worst relative difference %.2e\n", size,
-                solved.mesh().elements.size(), worst);
-    if (kSanitizedBuild) continue;
-    if (size == 0.25) {
-      EXPECT_LT(worst, 1e-3);
+  // The dense transfer, and hierarchical links (on the element trees' leaves) at the bound
+  // --link-error takes by default.
+  for (double linkError : {0.0, MeshOptions::kDefaultLinkError}) {
+    double previous = INFINITY;
+    for (double size : {0.5, 0.25}) {
+      MeshOptions options;
+      options.elementSize = size;
+      options.linkError = linkError;
+      Interreflection solved(cpuDevice(), scene, direct, options);
+      const std::vector<double> indirect = solved.indirect(points);
+      double worst = 0.0;
+      for (std::size_t k = 0; k < points.size(); ++k)
+        worst = std::max(worst, std::abs(e0[k] + indirect[k] - limit[k]) / limit[k]);
+      std::printf(
+          "link error %g, element size %.3f m: %zu elements, worst relative difference "
+          "%.2e\n",
+          linkError, size, solved.mesh().elements.size(), worst);
+      if (kSanitizedBuild) continue;
+      if (size == 0.25) {
+        EXPECT_LT(worst, 1e-3) << linkError;
+      }
+      EXPECT_LT(worst, previous) << linkError;
+      previous = worst;
     }
-    EXPECT_LT(worst, previous);
-    previous = worst;
   }
 }
 

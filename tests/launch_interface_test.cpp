@@ -27,6 +27,7 @@ std::vector<int> hostLayout(const PnLaunchParams& params) {
       static_cast<int>(offsetof(PnLaunchParams, paths)),
       static_cast<int>(offsetof(PnLaunchParams, bySource)),
       static_cast<int>(offsetof(PnLaunchParams, sourceStride)),
+      static_cast<int>(offsetof(PnLaunchParams, linked)),
       static_cast<int>(sizeof(PnSourceFace)),
       static_cast<int>(sizeof(PnAperture)),
       static_cast<int>(sizeof(PnOccluder)),
@@ -37,7 +38,8 @@ std::vector<int> hostLayout(const PnLaunchParams& params) {
   };
   int eps = 0;
   std::memcpy(&eps, &params.epsLength, sizeof eps);
-  for (int v : {params.faceCount, eps, params.paths, params.bySource, params.sourceStride})
+  for (int v :
+       {params.faceCount, eps, params.paths, params.bySource, params.sourceStride, params.linked})
     layout.push_back(v);
   return layout;
 }
@@ -49,6 +51,7 @@ TEST(LaunchInterface, StructLayoutsAndParamsAgreeWithTheKernel) {
   params.paths = PN_PATH_CULLING | PN_PATH_LANES;
   params.bySource = 1;
   params.sourceStride = 4096;
+  params.linked = 1;
   const std::vector<int> expected = hostLayout(params);
 
   compute::Device& device = cpuDevice();

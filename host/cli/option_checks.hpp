@@ -57,6 +57,14 @@ inline void addInterreflectionOptions(CLI::App& command, EstimatorOptions& optio
                   "exact and slower (docs/method.md, \"Interreflection\")")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  command
+      .add_option("--link-error", options.mesh.linkError,
+                  "Interreflection: the error bound of a hierarchical link, relative to the E of "
+                  "a hemisphere of unit luminance; 0 computes every element pair (the dense "
+                  "transfer, limited to 8000 elements) (docs/method.md, \"Hierarchical "
+                  "transfer\")")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
 }
 
 // --device, --reference, --reference-n, --direct-only, --element-size: how `grid` and `sweep`

@@ -38,7 +38,8 @@ std::string estimatorArguments(const EstimatorOptions& estimator) {
   if (estimator.reference)
     text += fmt::format(" --reference --reference-n {}", estimator.referenceN);
   if (!estimator.interreflection) text += " --direct-only";
-  text += fmt::format(" --element-size {}", estimator.mesh.elementSize);
+  text += fmt::format(" --element-size {} --link-error {}", estimator.mesh.elementSize,
+                      estimator.mesh.linkError);
   return text;
 }
 

@@ -11,6 +11,7 @@
 #include "engine/kernel_scene.hpp"
 #include "engine/luminaire_engine.hpp"
 #include "engine/patch_table.hpp"
+#include "geometry/morton_order.hpp"
 #include "shadow/scene_shadows.hpp"
 
 namespace penumbra {
@@ -38,9 +39,16 @@ struct IlluminanceEngine::State {
 
   void upload(const Scene& scene) {
     compute::Device& d = *device;
-    shadows = buildSceneShadows(scene);
-    volumes = flattenVolumes(shadows);
-    packed = packScene(scene, shadows);
+    // Each face's casters are packed and flattened as soon as they are built, then dropped:
+    // the kernel reads the packed copy, the patch tables the flattened volumes.
+    packed = packSceneFrame(scene);
+    volumes.clear();
+    const Tolerance tolerance = Tolerance::forSceneSize(scene.size());
+    shadows = buildSceneShadows(scene, [&](EmittingFaceShadows& face) {
+      packFace(packed, scene, face, tolerance);
+      volumes.push_back(flattenVolumes(face));
+      face.casters = {};
+    });
     if (!options.apertures)
       for (PnSourceFace& f : packed.faces) f.aperture = -1;
     const std::vector<std::size_t> tables = {
@@ -63,6 +71,11 @@ struct IlluminanceEngine::State {
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
     edges = DeviceBuffer::upload<cl_int4>(d, packed.edges);
     occluderVertices = DeviceBuffer::upload<cl_float4>(d, packed.occluderVertices);
+    // The device holds its copy; the host keeps what the patch tables and launches read.
+    packed.occluders = {};
+    packed.planes = {};
+    packed.edges = {};
+    packed.occluderVertices = {};
     hasLuminaires = !scene.luminaires.empty();
     if (hasLuminaires) {
       if (!luminaires) luminaires = std::make_unique<LuminaireEngine>(d, options);
@@ -98,49 +111,6 @@ std::string kernelError(int bits, const SamplePoint& p) {
       : (bits & PN_ERROR_TOO_MANY_CONTACTS)
           ? fmt::format("it touches more than {} solids", PN_MAX_CONTACTS)
           : fmt::format("more than {} visible pieces on one edge", PN_MAX_VISIBLE_PIECES));
-}
-
-}  // namespace
-
-namespace {
-
-// Spreads the low 21 bits of v to every third bit.
-std::uint64_t spreadBits(std::uint64_t v) {
-  v &= 0x1fffff;
-  v = (v | v << 32) & 0x1f00000000ffff;
-  v = (v | v << 16) & 0x1f0000ff0000ff;
-  v = (v | v << 8) & 0x100f00f00f00f00f;
-  v = (v | v << 4) & 0x10c30c30c30c30c3;
-  v = (v | v << 2) & 0x1249249249249249;
-  return v;
-}
-
-// The points in Morton (Z-curve) order of their positions, in cubic cells over the points'
-// bounding box. A work-item takes PN_LANES consecutive points, and the patch table lists a
-// face's casters for boxes of consecutive work-items (patch_table.cpp): compact runs of points
-// keep those boxes small. In a grid's own order a group of 128 points is a strip as long as the
-// room, whose list holds every caster along it.
-std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
-  Vec3 lo = points[0].position, hi = lo;
-  for (const SamplePoint& p : points) {
-    lo = lo.cwiseMin(p.position);
-    hi = hi.cwiseMax(p.position);
-  }
-  const double extent = (hi - lo).maxCoeff();
-  const double cells = double{1 << 21} - 1.0;
-  const double scale = extent > 0.0 ? cells / extent : 0.0;
-  std::vector<std::pair<std::uint64_t, std::size_t>> keys(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3 q = (points[i].position - lo) * scale;
-    std::uint64_t key = 0;
-    for (int k = 0; k < 3; ++k)
-      key |= spreadBits(static_cast<std::uint64_t>(std::clamp(q[k], 0.0, cells))) << k;
-    keys[i] = {key, i};
-  }
-  std::sort(keys.begin(), keys.end());
-  std::vector<std::size_t> order(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) order[i] = keys[i].second;
-  return order;
 }
 
 }  // namespace
@@ -228,8 +198,25 @@ std::vector<float> IlluminanceEngine::illuminanceBySource(std::span<const Sample
   return std::move(output.illuminance);
 }
 
+std::vector<float> IlluminanceEngine::linkedIlluminance(std::span<const SamplePoint> points,
+                                                        std::span<const std::int32_t> start,
+                                                        std::span<const std::int32_t> faces,
+                                                        std::vector<int>* overflow,
+                                                        std::span<const std::int32_t> receiver) {
+  const std::size_t items = (points.size() + PN_LANES - 1) / PN_LANES;
+  if (start.size() != items + 1 || start.back() != static_cast<cl_int>(faces.size()))
+    throw std::logic_error("linkedIlluminance: one link range per work-item, ending at the links");
+  if (overflow) overflow->assign(items, 0);
+  if (faces.empty()) return {};
+  if (!receiver.empty() && receiver.size() != items)
+    throw std::logic_error("linkedIlluminance: one receiver per work-item");
+  const LinkedLaunch linked{start, faces, overflow, receiver};
+  return launch(points, false, false, &linked).illuminance;
+}
+
 IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const SamplePoint> points,
-                                                          bool bySource, bool withClasses) {
+                                                          bool bySource, bool withClasses,
+                                                          const LinkedLaunch* linked) {
   const int sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
   // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
@@ -238,6 +225,17 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   const std::size_t workItems =
       (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
   const std::size_t padded = workItems * PN_LANES;
+  // A linked launch's work-items past the caller's have no links.
+  std::vector<cl_int> linkStart, receiver;
+  if (linked) {
+    linkStart.assign(linked->start.begin(), linked->start.end());
+    linkStart.resize(workItems + 1, linked->start.back());
+    if (!linked->receiver.empty()) {
+      receiver.assign(linked->receiver.begin(), linked->receiver.end());
+      receiver.resize(workItems, -1);
+    }
+  }
+  const std::size_t links = linked ? linked->faces.size() : 0;
   // Structure of arrays, one float8 lane per point. Padding repeats the last point.
   std::vector<float> coords[6];
   for (auto& c : coords) c.resize(padded);
@@ -253,12 +251,18 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   }
   // The volumes are grown by twice the kernel's tolerance: the kernel tests points against them
   // within its tolerance, in float.
+  const double margin = 2.0 * state_->packed.epsLength;
   const PatchTable table =
-      buildPatchTable(state_->shadows, state_->volumes, state_->packed, points, workItems,
-                      state_->options.culling, 2.0 * state_->packed.epsLength);
+      linked ? buildLinkPatchTable(state_->shadows, state_->volumes, state_->packed, points,
+                                   FaceLinks{linkStart, linked->faces, receiver},
+                                   state_->options.culling, margin)
+             : buildPatchTable(state_->shadows, state_->volumes, state_->packed, points, workItems,
+                               state_->options.culling, margin);
 
   compute::Device& d = *state_->device;
-  const std::size_t outValues = bySource ? padded * std::max(sourceCount, 1) : padded;
+  const std::size_t outValues = linked     ? links * PN_LANES
+                                : bySource ? padded * std::max(sourceCount, 1)
+                                           : padded;
   const std::size_t classBytes = padded * std::max(sourceCount, 1);
   const std::vector<std::size_t> batch = {padded * sizeof(float),
                                           padded * sizeof(float),
@@ -269,6 +273,8 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
                                           padded * sizeof(cl_int),
                                           compute::byteSize(table.entries),
                                           compute::byteSize(table.candidates),
+                                          compute::byteSize(linkStart),
+                                          links * sizeof(cl_int),
                                           outValues * sizeof(float),
                                           workItems * sizeof(cl_int),
                                           classBytes};
@@ -276,7 +282,7 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
     // Too many points for the device at once: halves cut on a work-group boundary give the same
     // work-items, and so the same values, as one launch would.
     constexpr std::size_t kGroupPoints = PN_LANES * kWorkGroup;
-    if (n > kGroupPoints) {
+    if (n > kGroupPoints && !linked) {
       const std::size_t half = (n / 2 + kGroupPoints - 1) / kGroupPoints * kGroupPoints;
       const KernelOutput first = launch(points.first(half), bySource, withClasses);
       const KernelOutput second = launch(points.subspan(half), bySource, withClasses);
@@ -306,6 +312,13 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
   DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
   DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
+  // Unlinked launches do not read the link buffers: the point solids stand in for them.
+  DeviceBuffer linkStartBuffer, linkFaceBuffer;
+  if (linked) {
+    linkStartBuffer = DeviceBuffer::upload<cl_int>(d, linkStart);
+    linkFaceBuffer = DeviceBuffer::upload<cl_int>(
+        d, std::vector<cl_int>(linked->faces.begin(), linked->faces.end()));
+  }
   DeviceBuffer out = DeviceBuffer::allocate(d, outValues * sizeof(float));
   DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
   DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
@@ -317,6 +330,7 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   if (state_->options.culling && state_->options.vectorPenumbra) params.paths |= PN_PATH_LANES;
   params.bySource = bySource ? 1 : 0;
   params.sourceStride = static_cast<cl_int>(padded);
+  params.linked = linked ? 1 : 0;
   IlluminanceBuffers buffers;
   buffers.pointX = &pointBuffers[0];
   buffers.pointY = &pointBuffers[1];
@@ -335,6 +349,8 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   buffers.apertures = &state_->apertures;
   buffers.patchFaces = &patchBuffer;
   buffers.candidates = &candidateBuffer;
+  buffers.linkStart = linked ? &linkStartBuffer : &ownBuffer;
+  buffers.linkFaces = linked ? &linkFaceBuffer : &ownBuffer;
   buffers.illuminance = &out;
   buffers.errors = &errors;
   buffers.classes = &classes;
@@ -348,9 +364,15 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   out.download(output.illuminance.data(), outValues * sizeof(float));
   std::vector<cl_int> errorBits(workItems);
   errors.download(errorBits.data(), workItems * sizeof(cl_int));
-  for (std::size_t w = 0; w < workItems; ++w)
-    if (errorBits[w] != 0)
-      throw std::runtime_error(kernelError(errorBits[w], points[std::min(w * PN_LANES, n - 1)]));
+  if (linked && linked->overflow) {
+    // The caller splits what overflowed: each work-item's bits, no exception.
+    linked->overflow->assign(errorBits.begin(), errorBits.begin() + static_cast<std::ptrdiff_t>(
+                                                                        linked->start.size() - 1));
+  } else {
+    for (std::size_t w = 0; w < workItems; ++w)
+      if (errorBits[w] != 0)
+        throw std::runtime_error(kernelError(errorBits[w], points[std::min(w * PN_LANES, n - 1)]));
+  }
   if (withClasses) {
     output.classes.resize(classBytes);
     classes.download(output.classes.data(), classBytes);

@@ -54,6 +54,22 @@ class IlluminanceEngine {
   // interreflection's element-to-element transfer reads, where per-source values are the
   // whole output and copying them would cost more than computing them.
   std::vector<float> illuminanceBySource(std::span<const SamplePoint> points, std::size_t& stride);
+  // E from single source faces at groups of PN_LANES points (links): the points are work-items of
+  // PN_LANES in order (the caller pads each group as it likes), and work-item w takes the faces
+  // faces[k], k in [start[w], start[w + 1]) (start: one entry per work-item and one more, ending
+  // at faces.size()). Value [k · PN_LANES + lane]: lx from face k alone at its source's
+  // luminance, as illuminanceBySource computes it (the same arithmetic, so the same floats).
+  // What the hierarchical transfer evaluates, where each group of points needs a few faces.
+  // A work-item whose occluders overflow the kernel's fixed room throws std::runtime_error, or,
+  // with `overflow`, sets that work-item's entry there (PN_ERROR_* bits, 0 where it fitted) and
+  // leaves its values undefined: the caller splits its links and asks again.
+  // `receiver` (optional, one per work-item): consecutive work-items with the same value have
+  // the same faces, which lets the host search their occluders once.
+  std::vector<float> linkedIlluminance(std::span<const SamplePoint> points,
+                                       std::span<const std::int32_t> start,
+                                       std::span<const std::int32_t> faces,
+                                       std::vector<int>* overflow = nullptr,
+                                       std::span<const std::int32_t> receiver = {});
 
  private:
   // One launch (or several, on a device too small for the batch): E per source ([source][padded
@@ -63,7 +79,13 @@ class IlluminanceEngine {
     std::vector<float> illuminance;
     std::vector<std::uint8_t> classes;
   };
-  KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses);
+  struct LinkedLaunch {
+    std::span<const std::int32_t> start, faces;  // linkedIlluminance's
+    std::vector<int>* overflow = nullptr;
+    std::span<const std::int32_t> receiver;
+  };
+  KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses,
+                      const LinkedLaunch* linked = nullptr);
 
   // The Lambertian sources' part of evaluate().
   IlluminanceResult evaluateSources(std::span<const SamplePoint> points, bool bySource);

@@ -173,6 +173,8 @@ constexpr BufferArgument kBufferArguments[] = {
     {"apertures", &IlluminanceBuffers::apertures},
     {"patch_faces", &IlluminanceBuffers::patchFaces},
     {"candidates", &IlluminanceBuffers::candidates},
+    {"link_start", &IlluminanceBuffers::linkStart},
+    {"link_faces", &IlluminanceBuffers::linkFaces},
     {"illuminance_lx", &IlluminanceBuffers::illuminance},
     {"errors", &IlluminanceBuffers::errors},
     {"classes", &IlluminanceBuffers::classes},
@@ -204,39 +206,48 @@ void bindIlluminanceArguments(compute::KernelLaunch& launch, const PnLaunchParam
   }
 }
 
-KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
+KernelScene packSceneFrame(const Scene& scene) {
   KernelScene packed;
   const BoundingBox bounds = scene.bounds();
   if (!bounds.empty()) packed.origin = 0.5 * (bounds.lo + bounds.hi);
-  const Relative r{packed.origin};
   packed.epsLength = static_cast<float>(Tolerance::kKernelRelative * std::max(scene.size(), 1.0));
   packed.sourceCount = static_cast<int>(scene.sources.size());
-  for (const EmittingFaceShadows& emitting : shadows.faces) {
-    const Source& source = scene.sources[emitting.source];
-    const ConvexPolygon& face = emitting.face;
-    if (face.size() > PN_MAX_SOURCE_VERTICES)
-      throw std::runtime_error(
-          fmt::format("source '{}' has a face with {} vertices; the kernel handles at most {}",
-                      source.name, face.size(), PN_MAX_SOURCE_VERTICES));
-    PnSourceFace f{};
-    f.plane = r.plane(face.plane());
-    f.firstVertex = static_cast<int>(packed.sourceVertices.size());
-    f.vertexCount = face.size();
-    for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
-    f.halfLuminance = halfLuminanceOf(source);
-    f.luminance = packLuminance(source, packed);
-    f.source = emitting.source;
-    f.aperture = -1;
-    if (emitting.aperture) {
-      f.aperture = static_cast<int>(packed.apertures.size());
-      packed.apertures.push_back(packAperture(*emitting.aperture, r));
-    }
-    f.firstOccluder = static_cast<int>(packed.occluders.size());
-    for (const ShadowCaster& caster : emitting.casters)
-      appendOccluder(packed, caster, face, shadows.tolerance, r);
-    f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
-    packed.faces.push_back(f);
+  return packed;
+}
+
+void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows& emitting,
+              const Tolerance& tolerance) {
+  const Relative r{packed.origin};
+  const Source& source = scene.sources[emitting.source];
+  const ConvexPolygon& face = emitting.face;
+  if (face.size() > PN_MAX_SOURCE_VERTICES)
+    throw std::runtime_error(
+        fmt::format("source '{}' has a face with {} vertices; the kernel handles at most {}",
+                    source.name, face.size(), PN_MAX_SOURCE_VERTICES));
+  PnSourceFace f{};
+  f.plane = r.plane(face.plane());
+  f.firstVertex = static_cast<int>(packed.sourceVertices.size());
+  f.vertexCount = face.size();
+  for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
+  f.halfLuminance = halfLuminanceOf(source);
+  f.luminance = packLuminance(source, packed);
+  f.source = emitting.source;
+  f.aperture = -1;
+  if (emitting.aperture) {
+    f.aperture = static_cast<int>(packed.apertures.size());
+    packed.apertures.push_back(packAperture(*emitting.aperture, r));
   }
+  f.firstOccluder = static_cast<int>(packed.occluders.size());
+  for (const ShadowCaster& caster : emitting.casters)
+    appendOccluder(packed, caster, face, tolerance, r);
+  f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
+  packed.faces.push_back(f);
+}
+
+KernelScene packScene(const Scene& scene, const SceneShadows& shadows) {
+  KernelScene packed = packSceneFrame(scene);
+  for (const EmittingFaceShadows& emitting : shadows.faces)
+    packFace(packed, scene, emitting, shadows.tolerance);
   return packed;
 }
 

@@ -36,6 +36,10 @@ struct KernelScene {
 // centre of scene.bounds(). Throws std::runtime_error when a face or solid exceeds the kernel's
 // limits (shared_types.h).
 KernelScene packScene(const Scene& scene, const SceneShadows& shadows);
+// packScene in steps: the frame (origin, tolerance, source count), then each face in order.
+KernelScene packSceneFrame(const Scene& scene);
+void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows& emitting,
+              const Tolerance& tolerance);
 
 // The build options of the illuminance program (kernels/illuminance.cl): OpenCL C 1.2 and the
 // kernel's relative tolerance, Tolerance::kKernelRelative.
@@ -62,9 +66,14 @@ struct IlluminanceBuffers {
   const compute::DeviceBuffer* apertures = nullptr;
   const compute::DeviceBuffer* patchFaces = nullptr;
   const compute::DeviceBuffer* candidates = nullptr;
-  const compute::DeviceBuffer* illuminance = nullptr;  // lx: per point, or [source][point]
-  const compute::DeviceBuffer* errors = nullptr;       // PN_ERROR_* bits per work-item
-  const compute::DeviceBuffer* classes = nullptr;      // ShadowClass, [source][point]
+  // With PnLaunchParams::linked: work-item g's links are [linkStart[g], linkStart[g + 1]) of
+  // linkFaces (source face indices); otherwise any buffer (the kernel does not read them).
+  const compute::DeviceBuffer* linkStart = nullptr;
+  const compute::DeviceBuffer* linkFaces = nullptr;
+  const compute::DeviceBuffer* illuminance =
+      nullptr;                                     // lx: per point, [source][point] or [link][lane]
+  const compute::DeviceBuffer* errors = nullptr;   // PN_ERROR_* bits per work-item
+  const compute::DeviceBuffer* classes = nullptr;  // ShadowClass, [source][point]
 };
 
 // The kernel's argument names as kernels/illuminance.cl spells them, in the order

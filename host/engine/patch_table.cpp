@@ -99,25 +99,65 @@ cl_int facingLanes(std::span<const SamplePoint> points, std::size_t w,
   return lanes;
 }
 
+// What the entry of a patch and a face reads of the face.
+struct FaceOfPatch {
+  const EmittingFaceShadows& face;
+  const FaceVolumes& volumes;
+  const Plane& emission;
+  cl_int firstOccluder;  // the face's first occluder in KernelScene::occluders
+};
+
+// The entry of work-item w (whose points' box is `box`) for a face: class C when no point faces
+// it; else class Umbra when one caster hides it from the whole box (`hiddenAround`: one hides it
+// from a box holding this one); else class B with the casters among `near` (those that may meet
+// a box holding this one) whose volume meets `box`, appended to `list`. `found` is scratch.
+PnPatchFace patchEntry(const FaceOfPatch& of, std::span<const SamplePoint> points, std::size_t w,
+                       const BoundingBox& box, std::span<const int> near, bool hiddenAround,
+                       double margin, std::vector<int>& found, std::vector<cl_int>& list) {
+  const bool dark = patchSeesNothing(points, w * PN_LANES, of.face, of.emission);
+  PnPatchFace entry{static_cast<cl_int>(list.size()), 0, dark ? PN_CLASS_C : PN_CLASS_B, 0};
+  if (dark) return entry;
+  if (!hiddenAround && near.empty()) return entry;  // no caster near: the unoccluded face
+  bool hidden = hiddenAround;
+  if (!hidden) {
+    boxCandidates(of.volumes, box, near, margin, found);
+    hidden = boxHidden(of.volumes, box, found, margin, points, w * PN_LANES, PN_LANES);
+  }
+  if (hidden) {
+    entry.faceClass = PN_CLASS_UMBRA;
+    entry.facingLanes = facingLanes(points, w, of.face, of.emission);
+    return entry;
+  }
+  for (int k : found) list.push_back(of.firstOccluder + k);
+  entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
+  return entry;
+}
+
 }  // namespace
 
 std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows) {
-  std::vector<FaceVolumes> all(shadows.faces.size());
-  for (std::size_t f = 0; f < all.size(); ++f) {
-    FaceVolumes& v = all[f];
-    v.first.push_back(0);
-    v.umbraFirst.push_back(0);
-    for (const ShadowCaster& caster : shadows.faces[f].casters) {
-      v.planes.insert(v.planes.end(), caster.volume.penumbra.begin(), caster.volume.penumbra.end());
-      v.first.push_back(v.planes.size());
-      if (!caster.behindAperture)
-        v.umbraPlanes.insert(v.umbraPlanes.end(), caster.volume.umbra.begin(),
-                             caster.volume.umbra.end());
-      v.umbraFirst.push_back(v.umbraPlanes.size());
-      v.solid.push_back(caster.solid);
-    }
-  }
+  std::vector<FaceVolumes> all;
+  for (const EmittingFaceShadows& face : shadows.faces) all.push_back(flattenVolumes(face));
   return all;
+}
+
+FaceVolumes flattenVolumes(const EmittingFaceShadows& face) {
+  FaceVolumes v;
+  v.first.push_back(0);
+  v.umbraFirst.push_back(0);
+  for (const ShadowCaster& caster : face.casters) {
+    v.planes.insert(v.planes.end(), caster.volume.penumbra.begin(), caster.volume.penumbra.end());
+    v.first.push_back(v.planes.size());
+    if (!caster.behindAperture)
+      v.umbraPlanes.insert(v.umbraPlanes.end(), caster.volume.umbra.begin(),
+                           caster.volume.umbra.end());
+    v.umbraFirst.push_back(v.umbraPlanes.size());
+    v.solid.push_back(caster.solid);
+    BoundingBox box;
+    for (const Vec3& vertex : caster.shape.vertices()) box.add(vertex);
+    v.box.push_back(box);
+  }
+  return v;
 }
 
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
@@ -140,7 +180,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
     const std::size_t f = sf % faceCount;
-    std::vector<int> all(shadows.faces[f].casters.size());
+    std::vector<int> all(volumes[f].solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
     const BoundingBox box = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
     boxCandidates(volumes[f], box, all, margin, superCandidates[sf]);
@@ -170,26 +210,10 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
         groupHidden = boxHidden(volumes[f], groupBox, near, margin, points, firstItem * PN_LANES,
                                 items * PN_LANES);
       }
-      for (std::size_t w = firstItem; w < firstItem + items; ++w) {
-        PnPatchFace& entry = table.entries[w * faceCount + f];
-        const bool dark = patchSeesNothing(points, w * PN_LANES, face, emission[f]);
-        entry = PnPatchFace{static_cast<cl_int>(list.size()), 0, dark ? PN_CLASS_C : PN_CLASS_B, 0};
-        if (dark) continue;
-        if (!groupHidden && near.empty()) continue;  // no caster near: the unoccluded face
-        bool hidden = groupHidden;
-        if (!hidden) {
-          boxCandidates(volumes[f], itemBoxes[w - firstItem], near, margin, found);
-          hidden = boxHidden(volumes[f], itemBoxes[w - firstItem], found, margin, points,
-                             w * PN_LANES, PN_LANES);
-        }
-        if (hidden) {
-          entry.faceClass = PN_CLASS_UMBRA;
-          entry.facingLanes = facingLanes(points, w, face, emission[f]);
-          continue;
-        }
-        for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
-        entry.candidateCount = static_cast<cl_int>(list.size()) - entry.firstCandidate;
-      }
+      const FaceOfPatch of{face, volumes[f], emission[f], packed.faces[f].firstOccluder};
+      for (std::size_t w = firstItem; w < firstItem + items; ++w)
+        table.entries[w * faceCount + f] = patchEntry(of, points, w, itemBoxes[w - firstItem], near,
+                                                      groupHidden, margin, found, list);
     }
   });
   std::size_t offset = 0;
@@ -199,6 +223,68 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     for (std::size_t w = firstItem; w < firstItem + items; ++w)
       for (std::size_t f = 0; f < faceCount; ++f)
         table.entries[w * faceCount + f].firstCandidate += static_cast<cl_int>(offset);
+    offset += groupCandidates[g].size();
+    table.candidates.insert(table.candidates.end(), groupCandidates[g].begin(),
+                            groupCandidates[g].end());
+  }
+  return table;
+}
+
+}  // namespace penumbra
+
+namespace penumbra {
+
+PatchTable buildLinkPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
+                               const KernelScene& packed, std::span<const SamplePoint> points,
+                               const FaceLinks& links, bool culling, double margin) {
+  const std::size_t workItems = links.start.size() - 1;
+  PatchTable table;
+  table.entries.resize(links.faces.size());
+  if (!culling) {
+    for (PnPatchFace& e : table.entries) e = PnPatchFace{0, -1, PN_CLASS_B, 0};
+    return table;
+  }
+  // Work-items in groups as buildPatchTable's, each group's candidates in a list of its own,
+  // joined in group order: the table does not depend on the thread count.
+  const std::size_t groups = (workItems + kItemsPerGroup - 1) / kItemsPerGroup;
+  std::vector<std::vector<cl_int>> groupCandidates(groups);
+  tbb::parallel_for(std::size_t{0}, groups, [&](std::size_t g) {
+    std::vector<int> near, found;
+    const std::size_t end = std::min(workItems, (g + 1) * kItemsPerGroup);
+    // Runs of work-items of one receiver (the same faces): the casters near each face are
+    // searched once for the run's box, then among those per work-item.
+    for (std::size_t first = g * kItemsPerGroup; first < end;) {
+      std::size_t last = first + 1;
+      while (last < end && !links.receiver.empty() && links.receiver[last] == links.receiver[first])
+        ++last;
+      const BoundingBox runBox = boxOf(points, first * PN_LANES, (last - first) * PN_LANES);
+      std::vector<BoundingBox> itemBoxes;
+      for (std::size_t w = first; w < last; ++w)
+        itemBoxes.push_back(boxOf(points, w * PN_LANES, PN_LANES));
+      const cl_int count = links.start[first + 1] - links.start[first];
+      for (cl_int j = 0; j < count; ++j) {
+        const auto f = static_cast<std::size_t>(links.faces[links.start[first] + j]);
+        const EmittingFaceShadows& face = shadows.faces[f];
+        BoundingBox shaft = runBox;
+        for (const Vec3& v : face.face.vertices()) shaft.add(v);
+        shaft = shaft.grown(margin);
+        near.clear();
+        for (std::size_t c = 0; c < volumes[f].box.size(); ++c)
+          if (volumes[f].box[c].overlaps(shaft)) near.push_back(static_cast<int>(c));
+        const Plane emission = face.face.plane();
+        const FaceOfPatch of{face, volumes[f], emission, packed.faces[f].firstOccluder};
+        for (std::size_t w = first; w < last; ++w)
+          table.entries[links.start[w] + j] = patchEntry(of, points, w, itemBoxes[w - first], near,
+                                                         false, margin, found, groupCandidates[g]);
+      }
+      first = last;
+    }
+  });
+  std::size_t offset = 0;
+  for (std::size_t g = 0; g < groups; ++g) {
+    const std::size_t end = std::min(workItems, (g + 1) * kItemsPerGroup);
+    for (cl_int k = links.start[g * kItemsPerGroup]; k < links.start[end]; ++k)
+      table.entries[k].firstCandidate += static_cast<cl_int>(offset);
     offset += groupCandidates[g].size();
     table.candidates.insert(table.candidates.end(), groupCandidates[g].begin(),
                             groupCandidates[g].end());

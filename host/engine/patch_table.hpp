@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/kernel_scene.hpp"
+#include "geometry/bounding_box.hpp"
 #include "geometry/sample_point.hpp"
 #include "kernels/shared_types.h"
 #include "shadow/scene_shadows.hpp"
@@ -27,9 +28,11 @@ struct FaceVolumes {
   // is behind the face's aperture (the kernel skips it for points that see the face through it).
   std::vector<Plane> umbraPlanes;
   std::vector<std::size_t> umbraFirst;
-  std::vector<int> solid;  // caster k's solid: it does not shade points on that solid
+  std::vector<int> solid;        // caster k's solid: it does not shade points on that solid
+  std::vector<BoundingBox> box;  // caster k's clipped solid's bounding box
 };
 std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows);
+FaceVolumes flattenVolumes(const EmittingFaceShadows& face);
 
 // `points` padded as the kernel sees them: work-item w holds points [w·PN_LANES, (w+1)·PN_LANES)
 // and the padding repeats the last point. `margin` (m) grows every penumbra volume and shrinks
@@ -42,5 +45,23 @@ std::vector<FaceVolumes> flattenVolumes(const SceneShadows& shadows);
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
                            const KernelScene& packed, std::span<const SamplePoint> points,
                            std::size_t workItems, bool culling, double margin);
+
+// Links: work-item w of a linked launch takes the source faces faces[k] for k in
+// [start[w], start[w + 1]) (start has one entry more than there are work-items).
+struct FaceLinks {
+  std::span<const cl_int> start;
+  std::span<const cl_int> faces;
+  // Optional, per work-item: consecutive work-items with the same value have the same faces in
+  // the same order (the points of one receiving element); empty: each its own.
+  std::span<const cl_int> receiver = {};
+};
+
+// The patch table of a linked launch: entry k for link k (its work-item's points and its face),
+// by the same tests as buildPatchTable's, each link's casters searched among those of its face
+// whose box meets the box around the work-item's points and the face (a caster outside it meets
+// no segment between them, so it shades none of them).
+PatchTable buildLinkPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
+                               const KernelScene& packed, std::span<const SamplePoint> points,
+                               const FaceLinks& links, bool culling, double margin);
 
 }  // namespace penumbra

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
 #include <fmt/format.h>
 
+#include "geometry/fnv1a_hash.hpp"
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_transfer.hpp"
 #include "timing/seconds_since.hpp"
@@ -122,6 +124,10 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
 Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                  IlluminanceEngine& direct, const MeshOptions& mesh,
                                  const EngineOptions& engine, TransferCache* cache) {
+  if (mesh.linkError > 0.0) {
+    solveHierarchically(device, scene, direct, mesh, engine, cache);
+    return;
+  }
   auto start = Clock::now();
   // The mesh, refined where the direct light is uneven; the direct E at its nodes comes with it.
   mesh_ = buildSurfaceMesh(scene, mesh);
@@ -135,8 +141,10 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                         20.0;
     throw std::runtime_error(fmt::format(
         "interreflection: {} elements at --element-size {} m, more than the {} the dense "
-        "solver takes; use --element-size {} or larger, or --direct-only",
-        mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits));
+        "solver takes; use --element-size {} or larger, --link-error {} (hierarchical links, "
+        "no element limit), or --direct-only",
+        mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits,
+        MeshOptions::kDefaultLinkError));
   }
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
@@ -145,13 +153,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_);
   }
-  direct_ = elementAverage(mesh_, light.direct);
-  report_.elements = mesh_.elements.size();
-  report_.elementSize = mesh.elementSize;
-  report_.nodes = mesh_.nodes.size();
-  report_.surfaceArea = mesh_.area();
-  report_.blackSolids = mesh_.blackSolids;
-  report_.meshSeconds = secondsSince(start);
+  finishMesh(light.direct, mesh.elementSize, start);
 
   if (mesh_.elements.empty()) return;
   const std::uint64_t key = transferFingerprint(scene, mesh_);
@@ -172,6 +174,74 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
     luminance_[i] = photometric(solution_.luminance.row(i).transpose());
 }
 
+void Interreflection::solveHierarchically(compute::Device& device, const Scene& scene,
+                                          IlluminanceEngine& direct, const MeshOptions& mesh,
+                                          const EngineOptions& engine, TransferCache* cache) {
+  auto start = Clock::now();
+  // The element trees, their leaves refined where the direct light is uneven, as the dense
+  // path refines its elements; no element limit (the links grow about linearly).
+  auto tree = std::make_unique<ElementTree>(buildElementTree(scene, mesh.elementSize));
+  const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  mesh_ = tree->leafMesh(mesh.quadratureOrder);
+  NodeLight light = nodeLight(direct, scene, mesh_);
+  for (int level = 0; level < mesh.refinementLevels; ++level) {
+    bool capped = false;
+    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
+                                                   std::numeric_limits<std::size_t>::max(), capped);
+    if (std::find(split.begin(), split.end(), 1) == split.end()) break;
+    for (std::size_t i = 0; i < split.size(); ++i)
+      if (split[i]) tree->split(tree->leaves[i], tolerance);
+    tree->numberLeaves();
+    mesh_ = tree->leafMesh(mesh.quadratureOrder);
+    light = nodeLight(direct, scene, mesh_);
+  }
+  finishMesh(light.direct, mesh.elementSize, start);
+  if (mesh_.elements.empty()) return;
+
+  Fnv1a salt;
+  salt.add(std::string_view("hierarchical links"));
+  salt.add(mesh.linkError);
+  const std::uint64_t key = transferFingerprint(scene, mesh_) ^ salt.value();
+  if (cache) geometry_ = cache->find(key);
+  report_.transferReused = geometry_ != nullptr;
+  if (!geometry_) {
+    start = Clock::now();
+    geometry_ = std::make_shared<GeometryTransfer>();
+    HierarchyOptions options;
+    options.linkError = mesh.linkError;
+    options.quadratureOrder = mesh.quadratureOrder;
+    geometry_->tree = std::move(tree);
+    geometry_->links =
+        std::make_unique<HierarchicalTransfer>(device, scene, *geometry_->tree, options, engine);
+    geometry_->seconds = secondsSince(start);
+    report_.transferSeconds = geometry_->seconds;
+    if (cache) cache->insert(key, geometry_);
+  }
+  report_.links = geometry_->links->links().source.size();
+
+  start = Clock::now();
+  const HierarchicalSolution solved = solveHierarchical(*geometry_->links, direct_);
+  solution_.indirect = solved.indirect;
+  solution_.luminance = solved.luminance;
+  solution_.residual = solved.residual;
+  report_.residual = solved.residual;
+  report_.solveSeconds = secondsSince(start);
+  luminance_.resize(solution_.luminance.rows());
+  for (Eigen::Index i = 0; i < luminance_.size(); ++i)
+    luminance_[i] = photometric(solution_.luminance.row(i).transpose());
+}
+
+void Interreflection::finishMesh(const Eigen::MatrixX3d& nodeDirect, double elementSize,
+                                 Clock::time_point start) {
+  direct_ = elementAverage(mesh_, nodeDirect);
+  report_.elements = mesh_.elements.size();
+  report_.elementSize = elementSize;
+  report_.nodes = mesh_.nodes.size();
+  report_.surfaceArea = mesh_.area();
+  report_.blackSolids = mesh_.blackSolids;
+  report_.meshSeconds = secondsSince(start);
+}
+
 Interreflection::~Interreflection() = default;
 
 Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
@@ -179,6 +249,8 @@ Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
   Eigen::MatrixXd e =
       Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), luminance.cols());
   if (!geometry_) return e;
+  if (geometry_->links)
+    return geometry_->links->gather(points, geometry_->links->nodeAverages(luminance));
   // Each element's E at unit luminance, weighted by its luminance; about 2^22 point·element
   // values (16 MB of float) at a time.
   const std::size_t elements = mesh_.elements.size();

@@ -16,6 +16,7 @@
 #include "radiosity/surface_mesh.hpp"
 #include "radiosity/transfer_cache.hpp"
 #include "scene/scene.hpp"
+#include "timing/seconds_since.hpp"
 
 namespace penumbra {
 
@@ -31,6 +32,7 @@ struct InterreflectionReport {
   double solveSeconds = 0.0;             // the linear solve (BiCGSTAB), every channel
   bool transferReused = false;           // the geometry's transfer came from the cache
   bool refinementCapped = false;         // refinement stopped at MeshOptions::maxElements
+  std::size_t links = 0;                 // hierarchical links; 0 for the dense transfer
   std::vector<std::string> blackSolids;  // reached by light, no material: black
 };
 
@@ -62,6 +64,12 @@ class Interreflection {
   // Σ_j E_j(P)·luminance(j, c) at every point P for every column c, E_j the kernel's E from
   // element j at 1 cd/m²: points × columns, lx.
   Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
+  // The element-average direct light and the mesh's part of the report, once the mesh is final.
+  void finishMesh(const Eigen::MatrixX3d& nodeDirect, double elementSize, Clock::time_point start);
+  // The constructor's work with hierarchical links (MeshOptions::linkError > 0).
+  void solveHierarchically(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
+                           const MeshOptions& mesh, const EngineOptions& engine,
+                           TransferCache* cache);
 
   SurfaceMesh mesh_;
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements

@@ -32,12 +32,12 @@ bool anyInFront(const ConvexPolygon& polygon, const ConvexPolygon& other, double
                      [&](const Vec3& v) { return plane.signedDistance(v) > tolerance; });
 }
 
+}  // namespace
+
 bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double tolerance) {
   return anyInFront(a, b, tolerance) && anyInFront(b, a, tolerance);
 }
 
-// Cuts a convex piece into cells of at most `size` along two axes of its plane (the first along
-// its longest edge, so that rectangles give rectangles).
 std::vector<ConvexPolygon> cutIntoCells(const ConvexPolygon& piece, double size, double tolerance) {
   const std::vector<Vec3>& v = piece.vertices();
   Vec3 u = Vec3::Zero();
@@ -69,6 +69,18 @@ std::vector<ConvexPolygon> cutIntoCells(const ConvexPolygon& piece, double size,
   return cells;
 }
 
+double longestEdge(const ConvexPolygon& polygon) {
+  double longest = 0.0;
+  const std::vector<Vec3>& v = polygon.vertices();
+  for (std::size_t k = 0; k < v.size(); ++k)
+    longest = std::max(longest, (v[(k + 1) % v.size()] - v[k]).norm());
+  return longest;
+}
+
+std::vector<ConvexPolygon> halved(const ConvexPolygon& polygon, double tolerance) {
+  return cutIntoCells(polygon, 0.5 * longestEdge(polygon), tolerance);
+}
+
 void placeNodes(SurfaceMesh& mesh, int order) {
   mesh.nodes.clear();
   mesh.weights.clear();
@@ -83,8 +95,6 @@ void placeNodes(SurfaceMesh& mesh, int order) {
   }
 }
 
-}  // namespace
-
 SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, int order,
                        double tolerance) {
   SurfaceMesh refined;
@@ -95,12 +105,7 @@ SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, 
       refined.elements.push_back(element);
       continue;
     }
-    // Cells of half the longest edge: a square becomes four, a long strip two.
-    double longest = 0.0;
-    const std::vector<Vec3>& v = element.polygon.vertices();
-    for (std::size_t k = 0; k < v.size(); ++k)
-      longest = std::max(longest, (v[(k + 1) % v.size()] - v[k]).norm());
-    for (ConvexPolygon& cell : cutIntoCells(element.polygon, 0.5 * longest, tolerance)) {
+    for (ConvexPolygon& cell : halved(element.polygon, tolerance)) {
       const double area = cell.area();
       refined.elements.push_back(
           {std::move(cell), element.solid, element.face, element.reflectance, area});
@@ -110,8 +115,7 @@ SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, 
   return refined;
 }
 
-SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
-  if (!(options.elementSize > 0.0)) throw std::invalid_argument("element size must be positive");
+std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::string>& blackSolids) {
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
 
   std::vector<FaceRef> faces;
@@ -162,7 +166,7 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
   std::vector<BoundingBox> boxes;
   for (const Solid& solid : scene.solids) boxes.push_back(boxOf(solid.shape.vertices()));
 
-  SurfaceMesh mesh;
+  std::vector<SurfacePiece> pieces;
   std::vector<char> namedBlack(scene.solids.size(), 0);
   for (std::size_t i = 0; i < faces.size(); ++i) {
     if (!reached[i]) continue;
@@ -170,7 +174,7 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
     if (!reflective(face)) {
       if (scene.solids[face.solid].material < 0 && !namedBlack[face.solid]) {
         namedBlack[face.solid] = 1;
-        mesh.blackSolids.push_back(scene.solids[face.solid].name);
+        blackSolids.push_back(scene.solids[face.solid].name);
       }
       continue;
     }
@@ -181,14 +185,24 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
         others.push_back(&scene.solids[s].shape);
     }
     const Vec3 reflectance = scene.materials[scene.solids[face.solid].material].reflectance;
-    for (const ConvexPolygon& piece : faceOutsideSolids(face.polygon, others, tolerance)) {
-      for (ConvexPolygon& cell : cutIntoCells(piece, options.elementSize, tolerance)) {
-        const double area = cell.area();
-        mesh.elements.push_back({std::move(cell), face.solid, face.face, reflectance, area});
-      }
+    for (ConvexPolygon& piece : faceOutsideSolids(face.polygon, others, tolerance)) {
+      const double area = piece.area();
+      pieces.push_back({std::move(piece), face.solid, face.face, reflectance, area});
     }
   }
+  return pieces;
+}
 
+SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
+  if (!(options.elementSize > 0.0)) throw std::invalid_argument("element size must be positive");
+  const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  SurfaceMesh mesh;
+  for (const SurfacePiece& piece : surfacePieces(scene, mesh.blackSolids)) {
+    for (ConvexPolygon& cell : cutIntoCells(piece.polygon, options.elementSize, tolerance)) {
+      const double area = cell.area();
+      mesh.elements.push_back({std::move(cell), piece.solid, piece.face, piece.reflectance, area});
+    }
+  }
   placeNodes(mesh, options.quadratureOrder);
   return mesh;
 }

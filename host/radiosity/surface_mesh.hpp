@@ -32,6 +32,10 @@ struct MeshOptions {
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
   // any refinement is refused with the element size that would fit.
   std::size_t maxElements = 8000;
+  // The transfer: 0 the dense element-to-element matrix; above 0 hierarchical links whose
+  // estimated error is at most this (HierarchyOptions::linkError), with no element limit.
+  static constexpr double kDefaultLinkError = 2e-4;
+  double linkError = 0.0;
 };
 
 struct SurfaceElement {
@@ -54,6 +58,27 @@ struct SurfaceMesh {
 
   double area() const;  // m², all elements
 };
+
+// The parts of the faces light can reach (buildSurfaceMesh says which) that no other solid
+// covers, as convex pieces with their face's solid, face and reflectance: what the mesh cuts into
+// elements. Reached faces without a material are left out and their solids named in
+// `blackSolids`.
+using SurfacePiece = SurfaceElement;
+std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::string>& blackSolids);
+
+// Whether polygons a and b can exchange light: each has a vertex more than `tolerance` in front
+// of the other's plane.
+bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double tolerance);
+
+// Cuts a convex piece into cells of at most `size` along two axes of its plane (the first along
+// its longest edge, so that rectangles give rectangles).
+std::vector<ConvexPolygon> cutIntoCells(const ConvexPolygon& piece, double size, double tolerance);
+double longestEdge(const ConvexPolygon& polygon);
+// Cells of half the longest edge: a square becomes four, a long strip two.
+std::vector<ConvexPolygon> halved(const ConvexPolygon& polygon, double tolerance);
+
+// Places `order` quadrature nodes per axis on every element (nodes, weights, nodeStart).
+void placeNodes(SurfaceMesh& mesh, int order);
 
 // Faces A and B can exchange light only if each has part of the other strictly in front of it.
 // Starting from the faces that can see a source or have a luminaire's photometric centre in

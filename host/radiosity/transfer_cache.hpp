@@ -12,18 +12,29 @@
 #include <Eigen/Dense>
 
 #include "engine/illuminance_engine.hpp"
+#include "radiosity/element_tree.hpp"
+#include "radiosity/hierarchical_transfer.hpp"
 #include "radiosity/surface_mesh.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
 
 struct GeometryTransfer {
+  // Dense (MeshOptions::linkError 0): the elements as unit sources, the kernel on them, and the
+  // element-to-element matrix.
   Scene elements;                             // elementScene: every element at 1 cd/m²
   std::unique_ptr<IlluminanceEngine> gather;  // the kernel on `elements`
   Eigen::MatrixXd transfer;                   // elementTransfer
-  double seconds = 0.0;                       // to compute all of it
+  // Hierarchical: the element trees (whose leaves are the mesh) and the links between them.
+  std::unique_ptr<ElementTree> tree;
+  std::unique_ptr<HierarchicalTransfer> links;
+  double seconds = 0.0;  // to compute all of it
 
-  std::size_t bytes() const { return static_cast<std::size_t>(transfer.size()) * sizeof(double); }
+  std::size_t bytes() const {
+    std::size_t b = static_cast<std::size_t>(transfer.size()) * sizeof(double);
+    if (links) b += links->links().source.size() * (sizeof(int) + sizeof(double));
+    return b;
+  }
 };
 
 // 64-bit fingerprint of everything the transfer depends on: the elements (polygons, solid and

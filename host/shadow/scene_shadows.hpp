@@ -4,6 +4,7 @@
 // positive-space of S_e"; a ceiling slab around a flush panel becomes empty or thin) with its
 // umbra and penumbra volumes. Solids left with no volume cast nothing and are dropped.
 // A polyhedron source is handled face by face (the kernel integrates it so; docs/method.md).
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -34,5 +35,10 @@ struct SceneShadows {
 };
 
 SceneShadows buildSceneShadows(const Scene& scene);
+// The same, handing each face to `consume` as soon as its casters are built, in face order; what
+// `consume` leaves of the face's casters is what the result holds (the kernel's engine packs
+// them and clears them: a scene of thousands of faces never holds all its casters at once).
+SceneShadows buildSceneShadows(const Scene& scene,
+                               const std::function<void(EmittingFaceShadows&)>& consume);
 
 }  // namespace penumbra
