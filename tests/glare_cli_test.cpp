@@ -112,4 +112,15 @@ TEST(GlareCommand, EyeInsideASolidIsStatusTwoWithFileLineAndKey) {
   EXPECT_FALSE(fs::exists(dir.path() / "out"));
 }
 
+TEST(GlareCommand, HelpTeachesTheFormulaAndTheFiles) {
+  TempDir dir("glare-cli");
+  const Result r = runPenumbra(dir.path(), "glare --help");
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* part :
+       {"UGR = 8 log10(0.25/L_b * sum L^2 omega / p^2)", "Guth position index", "--direct-only",
+        "<entry>.csv", "<entry>-sources.csv", "summary.json", "undefined"}) {
+    EXPECT_TRUE(contains(r.out, part)) << part << "\n" << r.out;
+  }
+}
+
 }  // namespace

@@ -8,6 +8,8 @@
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "glare/glare_rating.hpp"
 #include "glare/observer_ratings.hpp"
 #include "glare/position_index.hpp"
@@ -210,6 +212,57 @@ TEST(Glare, LambertianLuminaireHasOneLuminanceFromEveryDirection) {
                          kPrinted / (kNadirTable * cosGamma) + kPrinted / kNadirTable;
     EXPECT_NEAR(view.sources.front().luminance, nadirLuminance, bound * nadirLuminance);
     EXPECT_NEAR(view.sources.front().toCentre.norm(), toCentre.norm(), 1e-9);
+  }
+}
+
+// The scene of kPanel with an asymmetric luminaire and a screen, turned by `quarterTurns` × 90°
+// about the vertical through the origin: every point (x, y) → (−y, x) per turn, the luminaire's
+// aim by 90° per turn.
+std::string turnedScene(int quarterTurns) {
+  const auto turn = [&](Vec3 v) {
+    for (int k = 0; k < quarterTurns; ++k) v = Vec3(-v.y(), v.x(), v.z());
+    return v;
+  };
+  const auto text = [](const Vec3& v) { return fmt::format("[{}, {}, {}]", v.x(), v.y(), v.z()); };
+  const Vec3 a = turn(Vec3(1.5, -0.5, 1.4)), b = turn(Vec3(1.6, 0.05, 1.65));
+  return fmt::format(
+      "penumbra: 1\nsources:\n  - {{name: panel, polygon: [{}, {}, {}, {}], normal: {}, "
+      "luminance: 2000}}\nluminaires:\n  - {{name: washer, file: {}/data/luminaires/"
+      "asymmetric-wallwasher.ies, position: {}, aim: {{rotate_deg: {}, tilt_deg: 0}}}}\n"
+      "solids:\n  - {{name: screen, box: {{min: {}, max: {}}}}}\n",
+      text(turn(Vec3(3, -0.3, 1.8))), text(turn(Vec3(3, 0.3, 1.8))), text(turn(Vec3(3, 0.3, 2.4))),
+      text(turn(Vec3(3, -0.3, 2.4))), text(turn(Vec3(-1, 0, 0))), PENUMBRA_SOURCE_DIR,
+      text(turn(Vec3(2.5, 1.2, 2.8))), 90 * quarterTurns + 30, text(a.cwiseMin(b)),
+      text(a.cwiseMax(b)));
+}
+
+TEST(Glare, TurningTheSceneAndTheLineOfSightTogetherChangesNothing) {
+  // A quarter turn about the vertical maps the eye's view onto itself: every L, ω and p, hence
+  // Σ L²ω/p², is the same, up to rounding.
+  const Vec3 eye(0.2, -0.1, 1.2);
+  const Vec3 look = Vec3(1, 0.2, 0).normalized();
+  const Scene scene = parseScene(turnedScene(0), "turned.yaml");
+  const GlareRating rating = rateView(seenSources(scene, eye), look, 30.0);
+  ASSERT_EQ(rating.terms.size(), 2u);  // the panel and the wall-washer
+  for (const GlareTerm& term : rating.terms) EXPECT_GT(term.value(), 0.0) << term.name;
+  for (int turns = 1; turns < 4; ++turns) {
+    const Scene turned = parseScene(turnedScene(turns), "turned.yaml");
+    Vec3 turnedEye = eye, turnedLook = look;
+    for (int k = 0; k < turns; ++k) {
+      turnedEye = Vec3(-turnedEye.y(), turnedEye.x(), turnedEye.z());
+      turnedLook = Vec3(-turnedLook.y(), turnedLook.x(), turnedLook.z());
+    }
+    const GlareRating again = rateView(seenSources(turned, turnedEye), turnedLook, 30.0);
+    ASSERT_EQ(again.terms.size(), rating.terms.size()) << turns;
+    for (std::size_t i = 0; i < rating.terms.size(); ++i) {
+      EXPECT_EQ(again.terms[i].name, rating.terms[i].name);
+      EXPECT_NEAR(again.terms[i].luminance, rating.terms[i].luminance,
+                  1e-9 * rating.terms[i].luminance);
+      EXPECT_NEAR(again.terms[i].solidAngle, rating.terms[i].solidAngle,
+                  1e-9 * rating.terms[i].solidAngle);
+      EXPECT_NEAR(again.terms[i].positionIndex, rating.terms[i].positionIndex, 1e-9);
+    }
+    EXPECT_NEAR(*again.ugr, *rating.ugr, 1e-9) << turns;
   }
 }
 
