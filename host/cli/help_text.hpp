@@ -139,6 +139,41 @@ inline constexpr const char* kMergeFooter =
 inline constexpr const char* kDevices =
     "List the OpenCL devices: index (what --device takes), type, name, platform, compute units.";
 
+inline constexpr const char* kGlare =
+    "Rate discomfort glare: the Unified Glare Rating (UGR, CIE 117-1995) of every observer of the "
+    "scene ('observers:') along each of its lines of sight, from the exact solid angle of the "
+    "part of each luminous area the eye sees and the interreflected light at the eye.";
+
+inline constexpr const char* kGlareFooter =
+    "UGR = 8 log10(0.25/L_b * sum L^2 omega / p^2) (docs/glare.md), per glare source:\n"
+    "  L      its luminance towards the eye (cd/m²): a source's own; a luminaire's intensity\n"
+    "         towards the eye over its luminous area projected across that direction\n"
+    "  omega  the solid angle of the part of its luminous area the eye sees past the solids\n"
+    "         (sr), exact (not the far-field A_p/d²)\n"
+    "  p      the Guth position index; a source below the line of sight, behind the eye or\n"
+    "         beyond H/R = 1.9 or T/R = 3 is left out, and counted\n"
+    "  L_b    the background luminance E_ind/pi (cd/m²): the interreflected illuminance at the\n"
+    "         eye on the plane facing the line of sight. With --direct-only, or in a black\n"
+    "         room, L_b = 0 and UGR is undefined (reported as such, never as infinity).\n"
+    "Each observer is rated along its 'look', or along +x, +y, -x, -y when it gives none.\n"
+    "\n"
+    "Outputs (in the directory given with -o):\n"
+    "  <entry>.csv          one row per eye and line of sight: eye (m), look, UGR, the\n"
+    "                       strictest EN 12464-1 limit it meets (16, 19, 22, 25, 28), why it\n"
+    "                       is undefined, L_b (cd/m²), E_ind (lx), the sum, the sources rated\n"
+    "                       and left out, the strongest source and its share (%)\n"
+    "  <entry>-sources.csv  one row per source of each rating: L (cd/m²), omega and the\n"
+    "                       far-field A_p/d² (sr), p, L²omega/p² and its share (%)\n"
+    "  summary.json         the method, every rating with its sources, UGR_max\n"
+    "A table is printed at the end. The files appear together when the run has succeeded.\n"
+    "\n"
+    "Examples:\n"
+    "  penumbra glare data/office-glare.yaml -o out/glare\n"
+    "  penumbra glare data/office-glare.yaml -o out/glare --element-size 0.25\n"
+    "\n"
+    "Exit status: 0 done; 1 an error (device, output); 2 an invalid scene, reported as\n"
+    "file:line: key: message.";
+
 inline constexpr const char* kLuminaire =
     "Show what a photometric file (IES LM-63 .ies or EULUMDAT .ldt) holds, as penumbra reads it: "
     "format, photometric type, symmetry, lamps, light output ratio, luminous opening, peak "

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/devices_command.hpp"
+#include "cli/glare_options.hpp"
 #include "cli/grid_command.hpp"
 #include "cli/help_text.hpp"
 #include "cli/luminaire_options.hpp"
@@ -102,6 +103,10 @@ int main(int argc, char** argv) {
 
   CLI::App* devicesCommand = app.add_subcommand("devices", penumbra::help::kDevices);
 
+  penumbra::GlareOptions glare;
+  std::vector<std::string> glareSettings;
+  CLI::App* glareCommand = penumbra::cli::addGlareCommand(app, glare, glareSettings);
+
   penumbra::LuminaireOptions luminaire;
   CLI::App* luminaireCommand = penumbra::cli::addLuminaireCommand(app, luminaire);
 
@@ -142,6 +147,10 @@ int main(int argc, char** argv) {
   if (*mergeCommand) return penumbra::runMergeCommand(merge);
   if (*toneMapCommand) return penumbra::runToneMapCommand(toneMap);
   if (*devicesCommand) return penumbra::runDevicesCommand();
+  if (*glareCommand) {
+    glare.parameters = penumbra::cli::parameterAssignments(glareSettings);
+    return penumbra::runGlareCommand(glare);
+  }
   if (*luminaireCommand) return penumbra::runLuminaireCommand(luminaire);
   return 1;
 }

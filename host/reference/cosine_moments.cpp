@@ -2,13 +2,14 @@
 
 #include <cmath>
 
+#include "reference/region_solid_angle.hpp"
+
 namespace penumbra {
 
 std::vector<double> cosineMoments(std::span<const VisibleArc> arcs, const Vec3& w, const Vec3& n,
                                   int order) {
   const std::size_t count = static_cast<std::size_t>(order) + 1;
   std::vector<double> sumW(count, 0.0), sumN(count, 0.0), f(count, 0.0);
-  double solidAngle = 0.0;
   for (const VisibleArc& arc : arcs) {
     const Vec3 a = arc.from.normalized(), b = arc.to.normalized();
     const Vec3 normal = b.cross(a);
@@ -35,12 +36,10 @@ std::vector<double> cosineMoments(std::span<const VisibleArc> arcs, const Vec3& 
       sumW[k] += wm * f[k];
       sumN[k] += nm * f[k];
     }
-    // The signed solid angle of the triangle (w, a, b) (Van Oosterom and Strackee).
-    solidAngle += 2.0 * std::atan2(w.dot(normal), 1.0 + w.dot(a) + a.dot(b) + w.dot(b));
   }
   // τ_0..τ_{order−1}.
   std::vector<double> tau(count, 0.0);
-  tau[0] = solidAngle;
+  tau[0] = regionSolidAngle(arcs, w);
   for (std::size_t k = 1; k + 1 < count; ++k) {
     const double previous = k >= 2 ? (k - 1.0) * tau[k - 2] : 0.0;
     tau[k] = (previous + sumW[k - 1]) / (k + 1.0);

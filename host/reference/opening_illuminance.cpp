@@ -5,12 +5,15 @@
 
 namespace penumbra {
 
-ConvexPolygon placedOpening(const LuminaireOpening& opening, const LuminaireInstance& instance) {
+ConvexPolygon placedOutline(std::span<const Vec3> outline, const LuminaireInstance& instance) {
   std::vector<Vec3> vertices;
-  vertices.reserve(opening.outline.size());
-  for (const Vec3& v : opening.outline)
-    vertices.push_back(instance.position + instance.toScene * v);
+  vertices.reserve(outline.size());
+  for (const Vec3& v : outline) vertices.push_back(instance.position + instance.toScene * v);
   return ConvexPolygon(std::move(vertices));
+}
+
+ConvexPolygon placedOpening(const LuminaireOpening& opening, const LuminaireInstance& instance) {
+  return placedOutline(opening.outline, instance);
 }
 
 double openingIlluminance(const Luminaire& luminaire, const LuminaireInstance& instance,

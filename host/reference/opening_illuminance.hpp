@@ -6,6 +6,8 @@
 //   E = s · Σ_k c_k ∫_V (w·ω)^k (n·ω) dω,   w = −N,
 // s the luminaire's intensity scale, V the visible part (visible_boundary.hpp) and the integrals
 // the closed forms of cosine_moments.hpp.
+#include <span>
+
 #include "geometry/convex_polygon.hpp"
 #include "geometry/sample_point.hpp"
 #include "scene/scene.hpp"
@@ -14,6 +16,8 @@ namespace penumbra {
 
 // The opening of `instance` in scene coordinates (its normal the emission direction N).
 ConvexPolygon placedOpening(const LuminaireOpening& opening, const LuminaireInstance& instance);
+// The same for an outline in the luminaire's local frame (Luminaire::luminousOutline).
+ConvexPolygon placedOutline(std::span<const Vec3> outline, const LuminaireInstance& instance);
 
 // E in lx at `point` from `instance` of `luminaire` (its model Area, not subdivided); `tolerance`
 // the scene's length tolerance (m).

@@ -72,6 +72,9 @@ struct Luminaire {
   double intensityScale = 1.0;
   LuminaireModel model = LuminaireModel::Point;
   std::optional<LuminaireOpening> opening;  // set for the area model
+  // The file's luminous opening where it is flat (rectangle, disk, ellipse), whatever the model:
+  // photometry::flatOutline in the local frame. Glare ratings see this area (docs/glare.md).
+  std::vector<Vec3> luminousOutline;
   std::vector<LuminaireInstance> instances;
 
   // lm of one instance by the zonal method (photometry/zonal_flux.hpp) on the scaled table, before

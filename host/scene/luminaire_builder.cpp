@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "photometry/luminous_opening.hpp"
 #include "photometry/photometric_error.hpp"
 #include "photometry/photometric_file.hpp"
 
@@ -28,6 +29,7 @@ Luminaire buildLuminaire(const LuminaireSpec& spec, const BuildContext& context)
   luminaire.distribution = std::make_shared<const photometry::LightDistribution>(data);
   luminaire.maintenanceFactor = spec.maintenanceFactor;
   luminaire.model = spec.model.value_or(LuminaireModel::Area);
+  luminaire.luminousOutline = photometry::flatOutline(data.opening);
   if (luminaire.model == LuminaireModel::Area) {
     luminaire.opening = luminaireOpening(data.opening, *luminaire.distribution);
     if (!luminaire.opening && !spec.model) {

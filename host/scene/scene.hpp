@@ -106,6 +106,17 @@ struct View {
   int width = 1280, height = 720;  // pixels
 };
 
+// An eye for `penumbra glare` (docs/glare.md): where it is and the lines of sight along which its
+// UGR is rated, unit vectors, each with a horizontal component (the Guth position index measures
+// a source's height above a line of sight in the vertical plane through it). An observer grid
+// of the scene file is expanded into one Observer per point, named name[column,row] (1-based).
+struct Observer {
+  std::string name;
+  std::string entry;        // the `observers:` entry it comes from (its name for a single eye)
+  Vec3 eye = Vec3::Zero();  // m
+  std::vector<Vec3> looks;  // unit; the scene's `look`, or +x, +y, −x, −y
+};
+
 struct Scene {
   std::filesystem::path file;
   std::vector<Material> materials;
@@ -114,6 +125,7 @@ struct Scene {
   std::vector<Luminaire> luminaires;  // photometric luminaires, each with its instances
   std::vector<CalculationGrid> grids;
   std::vector<View> views;
+  std::vector<Observer> observers;
   std::optional<Room> room;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
   // What loaded but is probably a mistake (docs/scene-format.md, "Warnings"), in file order.

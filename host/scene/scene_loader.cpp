@@ -10,9 +10,11 @@
 #include <yaml-cpp/yaml.h>
 
 #include "geometry/tolerance.hpp"
+#include "scene/eye_placement.hpp"
 #include "scene/grid_builder.hpp"
 #include "scene/grid_placement.hpp"
 #include "scene/luminaire_builder.hpp"
+#include "scene/observer_builder.hpp"
 #include "scene/parameter_reader.hpp"
 #include "scene/room_builder.hpp"
 #include "scene/shape_builder.hpp"
@@ -126,15 +128,14 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   }
   addPlacementWarnings(spec, scene, context.tolerance);
   for (const ViewSpec& view : spec.views) {
-    // A camera inside a wall or a desk would show the inside of a solid: black, or nothing.
-    for (const Solid& solid : scene.solids) {
-      if (solid.shape.containsStrictly(view.eye, context.tolerance)) {
-        fail(file, view.eyeWhere,
-             fmt::format("view '{}': the eye {} m is inside the solid '{}'; move it into the room",
-                         view.name, formatVec3(view.eye), solid.name));
-      }
-    }
+    requireEyeOutsideSolids(view.eye, fmt::format("view '{}'", view.name), view.eyeWhere,
+                            scene.solids, context);
     scene.views.push_back(static_cast<const View&>(view));
+  }
+  for (const ObserverSpec& observer : spec.observers) {
+    for (Observer& built : buildObservers(observer, scene.solids, context)) {
+      scene.observers.push_back(std::move(built));
+    }
   }
   return scene;
 }

@@ -120,6 +120,19 @@ struct ViewSpec : View {
   Where where, eyeWhere;
 };
 
+// An `observers:` entry as written: one eye, or a grid of eyes over the parallelogram
+// origin + [0,1]·u + [0,1]·v at the centres of cells of at most `spacing` a side.
+struct ObserverGridSpec {
+  Vec3 origin = Vec3::Zero(), u = Vec3::Zero(), v = Vec3::Zero();
+  double spacing = 0.0;  // m
+};
+struct ObserverSpec {
+  std::string name;
+  std::variant<Vec3, ObserverGridSpec> eyes;  // m
+  std::optional<Vec3> look;                   // unit
+  Where where, eyeWhere;
+};
+
 // A `luminaires:` entry as written: the file is read when the scene is built.
 struct LuminaireSpec {
   std::string name;
@@ -146,6 +159,7 @@ struct SceneSpec {
   std::vector<LuminaireSpec> luminaires;
   std::vector<GridSpec> grids;
   std::vector<ViewSpec> views;
+  std::vector<ObserverSpec> observers;
 };
 
 }  // namespace penumbra::scenefile

@@ -6,6 +6,7 @@
 
 #include "scene/grid_reader.hpp"
 #include "scene/luminaire_reader.hpp"
+#include "scene/observer_reader.hpp"
 #include "scene/shape_reader.hpp"
 #include "scene/view_reader.hpp"
 
@@ -224,7 +225,7 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   const MapView root = reader.map(reader.root(document), "the scene");
   // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
   root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids",
-                  "views", "luminaires"},
+                  "views", "luminaires", "observers"},
                  "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
@@ -251,6 +252,8 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
                                   [&](const Field& item) { return readGrid(reader, item); });
   spec.views = readList<ViewSpec>(reader, root, "views",
                                   [&](const Field& item) { return readView(reader, item); });
+  spec.observers = readList<ObserverSpec>(
+      reader, root, "observers", [&](const Field& item) { return readObserver(reader, item); });
   return spec;
 }
 
