@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "grid/scene_grids.hpp"
+#include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "study/results_table.hpp"
 #include "study/study_charts.hpp"
@@ -162,7 +163,10 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     report.totalSeconds = secondsSince(start);
 
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
-    for (const GridReport& g : report.grids) record.grids.push_back({g.name, g.metrics});
+    for (const GridReport& g : report.grids) {
+      record.grids.push_back(
+          {g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report))});
+    }
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
     writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
     ++summary.computed;
