@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
@@ -156,12 +157,31 @@ void writeGridRes(std::ostream& out, const GridReport& grid, NumberDigits digits
   out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
 }
 
-std::string illuminanceMeaning(bool interreflection) {
-  return interreflection ? "total (direct + interreflected)" : "direct only";
+std::string maintenanceMeaning(const std::vector<LuminaireReport>& luminaires) {
+  const bool maintained =
+      std::any_of(luminaires.begin(), luminaires.end(),
+                  [](const LuminaireReport& l) { return l.maintenanceFactor != 1.0; });
+  if (!maintained) return "";
+  const bool shared =
+      std::all_of(luminaires.begin(), luminaires.end(), [&](const LuminaireReport& l) {
+        return l.maintenanceFactor == luminaires.front().maintenanceFactor;
+      });
+  if (shared) return fmt::format("maintained, MF {}", luminaires.front().maintenanceFactor);
+  std::string each;
+  for (const LuminaireReport& l : luminaires)
+    each += fmt::format("{}{} {}", each.empty() ? "" : ", ", l.name, l.maintenanceFactor);
+  return "maintained (MF per luminaire: " + each + ")";
+}
+
+std::string illuminanceMeaning(bool interreflection,
+                               const std::vector<LuminaireReport>& luminaires) {
+  const std::string maintenance = maintenanceMeaning(luminaires);
+  return std::string(interreflection ? "total (direct + interreflected)" : "direct only") +
+         (maintenance.empty() ? "" : ", " + maintenance);
 }
 
 std::string illuminanceMeaning(const RunReport& report) {
-  return illuminanceMeaning(report.interreflection.has_value());
+  return illuminanceMeaning(report.interreflection.has_value(), report.luminaires);
 }
 
 nlohmann::json interreflectionJson(const InterreflectionReport& r) {

@@ -52,9 +52,15 @@ void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits
 void writeGridRes(std::ostream& out, const GridReport& grid, NumberDigits digits);
 void writeGridPts(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
-// What E includes, in words: "total (direct + interreflected)" or "direct only".
+// What E includes, in words: "total (direct + interreflected)" or "direct only", followed by
+// the luminaires' maintenance (maintenanceMeaning) where one has a factor below 1.
 std::string illuminanceMeaning(const RunReport& report);
-std::string illuminanceMeaning(bool interreflection);
+std::string illuminanceMeaning(bool interreflection,
+                               const std::vector<LuminaireReport>& luminaires);
+// The maintenance the luminaires' light includes: "" when every maintenance factor is 1 (or
+// there are no luminaires), "maintained, MF 0.8" when all share one, otherwise "maintained (MF
+// per luminaire: panel 0.8, downlight 0.9)".
+std::string maintenanceMeaning(const std::vector<LuminaireReport>& luminaires);
 // The interreflection solver's report and the photometric luminaires, as summary.json and
 // render.json give them.
 nlohmann::json interreflectionJson(const InterreflectionReport& report);
