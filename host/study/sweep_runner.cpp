@@ -12,6 +12,7 @@
 #include "output/staged_directory.hpp"
 #include "study/results_table.hpp"
 #include "study/study_charts.hpp"
+#include "study/study_exposure.hpp"
 #include "study/study_plan.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -173,6 +174,7 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     if (stale) ++summary.recomputed;
     observer.caseFinished(record, secondsSince(start));
   }
+  if (exposedAsOne(layout)) exposeStudyRenders(settings.output, layout);
   summary.table = writeStudyTables(settings.output, layout, settings.charts);
   return summary;
 }
@@ -214,6 +216,8 @@ TableSummary mergeSweeps(const std::vector<fs::path>& inputs, const fs::path& ou
       break;
     }
   }
+  // Each shard exposed its own cases as one; the joined study is exposed as one again.
+  if (exposedAsOne(layout)) exposeStudyRenders(output, layout);
   return writeStudyTables(output, layout, charts);
 }
 
