@@ -22,6 +22,7 @@
 #include "grid/grid_evaluation.hpp"
 #include "grid/grid_metrics.hpp"
 #include "grid/run_report.hpp"
+#include "output/render_files.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "output/summary_table.hpp"
@@ -496,6 +497,29 @@ TEST(SummaryTable, UniformityOnlyForAreas) {
             std::make_pair(fmt::format("{:.3f}", (1.0 / 7.0) / eAvg),
                            fmt::format("{:.3f}", (1.0 / 7.0) / 512.3456789012345)));
   EXPECT_EQ(lastTwo(rows[4]), std::make_pair(std::string("-"), std::string("-")));
+}
+
+// What E includes names the maintenance where a factor is below 1, in the summary, the table's
+// first line and the render metadata alike.
+TEST(IlluminanceMeaning, NamesTheMaintenanceFactorWhereOneApplies) {
+  RunReport run = handMadeRun();
+  LuminaireReport panel, downlight;
+  panel.name = "panel";
+  downlight.name = "downlight";
+  run.luminaires = {panel, downlight};  // both new: MF 1
+  EXPECT_EQ(summaryJson(run)["illuminance"], "direct only");
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: direct illuminance only");
+  run.luminaires[0].maintenanceFactor = run.luminaires[1].maintenanceFactor = 0.8;
+  EXPECT_EQ(summaryJson(run)["illuminance"], "direct only, maintained, MF 0.8");
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: direct illuminance only, maintained, MF 0.8");
+  run.luminaires[1].maintenanceFactor = 1.0;
+  run.interreflection = InterreflectionReport{};
+  const std::string each = "maintained (MF per luminaire: panel 0.8, downlight 1)";
+  EXPECT_EQ(summaryJson(run)["illuminance"], "total (direct + interreflected), " + each);
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: total illuminance (direct + interreflected), " + each);
+  RenderReport render;
+  render.luminaires = run.luminaires;
+  EXPECT_EQ(renderJson(render)["light"], "direct only, " + each);
 }
 
 }  // namespace

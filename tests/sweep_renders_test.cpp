@@ -306,6 +306,29 @@ TEST(SweepRenders, AutoAllExposesTheWholeStudyWithOneWhite) {
   EXPECT_GT(doubled, 48 * 32 / 4);
 }
 
+// auto-all over runs: a later run (a shard, --resume) exposes again the cases an earlier one
+// wrote, so that every case of the folder shares the white of all of them.
+TEST(SweepRenders, AutoAllExposesAgainTheCasesOfEarlierRuns) {
+  TempDir dir("penumbra-sweep-renders");
+  SweepObserver silent;
+  const auto whiteOf = [&](const char* folder) {
+    return nlohmann::json::parse(
+               readText(dir.path() / "out/cases" / folder / "corner.tonemap.json"))["white_cdm2"]
+        .get<double>();
+  };
+  RenderSweep first = fluxSweep(dir.path(), "auto-all");
+  first.settings.shard = Shard{1, 2};
+  runSweep(first.study, first.settings, silent);
+  const double alone = whiteOf("case-001");  // its own automatic white: the only picture
+  EXPECT_FALSE(fs::exists(dir.path() / "out/cases/case-002"));
+  RenderSweep second = fluxSweep(dir.path(), "auto-all");
+  second.settings.shard = Shard{2, 2};
+  runSweep(second.study, second.settings, silent);
+  // Case 2 has twice the luminance: its own white is twice case 1's, and the shared one √2 times.
+  EXPECT_NEAR(whiteOf("case-001"), std::sqrt(2.0) * alone, 1e-5 * alone);
+  EXPECT_EQ(whiteOf("case-002"), whiteOf("case-001"));
+}
+
 TEST(SweepRenders, AnUnknownViewIsAnErrorNamingTheScenesViews) {
   TempDir dir("penumbra-sweep-renders");
   write(dir.path() / "scene.yaml", kScene);
