@@ -112,7 +112,7 @@ TEST(NumberText, TheCacheGivesEachValueItsOwnTextWhenValuesShareASlot) {
 }
 
 TEST(GridRows, RowsAreThoseOfThePlainFmtFormat) {
-  GridRows rows;
+  GridRows rows(NumberDigits::Double);
   std::string csv, res, pts;
   std::mt19937 random(5);
   std::uniform_real_distribution<double> u(-3.0, 3.0);
@@ -169,7 +169,7 @@ TEST(GridFileWriter, FilesWrittenBatchByBatchAreThoseOfThePlainFmtFormat) {
     for (const SamplePoint& p : points) e.push_back(byPosition(p));
     return e;
   };
-  GridFileWriter files(dir.path(), scene, grid);
+  GridFileWriter files(dir.path(), scene, grid, false, NumberDigits::Double);
   streamGrid(scene, grid, estimate, 1000, [&](const GridBatch& batch) { files.write(batch); });
   files.close();
 

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <initializer_list>
 #include <string>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -139,6 +140,50 @@ TEST(LuminaireAreaModel, TheDeviceRunsItAndAgreesWithTheReference) {
   const double fromDevice = eAvg("device"), fromReference = eAvg("reference");
   EXPECT_GT(fromReference, 0.0);
   EXPECT_NEAR(fromDevice, fromReference, 1e-5 * fromReference);
+}
+
+// Two downlights with maintenance factors `first` and `second` over a 2 × 2 m floor grid.
+void writeMaintainedScene(const fs::path& dir, double first, double second) {
+  std::ofstream scene(dir / "scene.yaml");
+  scene << "penumbra: 1\nluminaires:\n";
+  for (const int k : {1, 2}) {
+    scene << "  - {name: light-" << k << ", file: '"
+          << (kExamples / "narrow-downlight.ies").string() << "', position: [" << k
+          << ", 1, 2.9], maintenance_factor: " << (k == 1 ? first : second) << "}\n";
+  }
+  scene << "grids:\n  - {name: floor, rect: {origin: [0, 0, 0], u: [2, 0, 0], v: [0, 2, 0]}, "
+           "spacing: 0.5}\n";
+}
+
+// The first line of the printed table and summary.json's "illuminance" say what E includes: the
+// maintenance factor where one is below 1, and the values do include it.
+TEST(LuminaireMaintenance, TheTableAndTheSummarySayWhatEIncludes) {
+  TempDir dir("luminaire-cli");
+  const auto run = [&](double first, double second, const std::string& out) {
+    writeMaintainedScene(dir.path(), first, second);
+    const Result r = runPenumbra(dir.path(), "grid scene.yaml -o " + out + " --reference");
+    EXPECT_EQ(r.status, 0) << r.err;
+    std::ifstream in(dir.path() / out / "summary.json");
+    const nlohmann::json summary = nlohmann::json::parse(in);
+    return std::make_tuple(r.out.substr(0, r.out.find('\n')), summary.at("illuminance"),
+                           summary.at("grids").at(0).at("Eavg_lx").get<double>());
+  };
+  const auto [newTable, newSummary, newAvg] = run(1.0, 1.0, "new");
+  EXPECT_EQ(newTable, "E: direct illuminance only");
+  EXPECT_EQ(newSummary, "direct only");
+
+  const auto [table, summary, eAvg] = run(0.8, 0.8, "maintained");
+  EXPECT_EQ(table, "E: direct illuminance only, maintained, MF 0.8");
+  EXPECT_EQ(summary, "direct only, maintained, MF 0.8");
+  EXPECT_NEAR(eAvg, 0.8 * newAvg, 1e-12 * newAvg);
+
+  const auto [eachTable, eachSummary, eachAvg] = run(0.8, 0.9, "each");
+  EXPECT_EQ(eachTable,
+            "E: direct illuminance only, maintained (MF per luminaire: light-1 0.8, "
+            "light-2 0.9)");
+  EXPECT_EQ(eachSummary, "direct only, maintained (MF per luminaire: light-1 0.8, light-2 0.9)");
+  EXPECT_LT(eachAvg, 0.9 * newAvg);
+  EXPECT_GT(eachAvg, 0.8 * newAvg);
 }
 
 }  // namespace

@@ -4,7 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -20,6 +22,7 @@
 #include "grid/grid_evaluation.hpp"
 #include "grid/grid_metrics.hpp"
 #include "grid/run_report.hpp"
+#include "output/render_files.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "output/summary_table.hpp"
@@ -238,7 +241,7 @@ TEST(ResultFiles, CsvAndResReadBackToTheSameValues) {
 
 TEST(ResultFiles, SummaryJsonReadsBack) {
   TempDir dir("penumbra-output-test");
-  const RunReport run = handMadeRun();
+  RunReport run = handMadeRun();
   writeResults(run, dir.path() / "out");
   const auto summary = nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
   EXPECT_EQ(summary["scene"], "data/office.yaml");
@@ -260,9 +263,88 @@ TEST(ResultFiles, SummaryJsonReadsBack) {
   EXPECT_EQ(g["Eavg_lx"].get<double>(), m.eAvg);
   EXPECT_EQ(g["Emin_lx"].get<double>(), m.eMin);
   EXPECT_EQ(g["Emax_lx"].get<double>(), m.eMax);
-  EXPECT_EQ(g["U0"].get<double>(), m.u0);
-  EXPECT_EQ(g["Ud"].get<double>(), m.ud);
+  // A point list's scattered sensors make no area: no uniformity.
+  EXPECT_TRUE(g["U0"].is_null());
+  EXPECT_TRUE(g["Ud"].is_null());
   EXPECT_EQ(g["time_s"].get<double>(), 0.125);
+  run.grids[1].kind = GridKind::Rect;
+  const auto area = summaryJson(run)["grids"][1];
+  EXPECT_EQ(area["U0"].get<double>(), m.u0);
+  EXPECT_EQ(area["Ud"].get<double>(), m.ud);
+}
+
+// The significant digits of a number's text: its mantissa's digits from the first non-zero one.
+int significantDigits(const std::string& text) {
+  const std::string mantissa = text.substr(0, text.find_first_of("eE"));
+  int digits = 0;
+  bool started = false;
+  for (const char c : mantissa) {
+    started = started || (c >= '1' && c <= '9');
+    digits += started && c >= '0' && c <= '9';
+  }
+  return digits;
+}
+
+// The text of key `key` in a JSON file's first object that has it, as written.
+std::string jsonNumberText(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  if (at == std::string::npos) return "";
+  const std::size_t start = at + key.size() + 4;
+  return json.substr(start, json.find_first_of(",\n}", start) - start);
+}
+
+TEST(ResultFiles, KernelIlluminanceHasItsFloatsDigitsAndGeometryItsDoubles) {
+  // The kernel's E is a double sum of single-precision contributions: digits past the float's
+  // hold nothing, so E is written as the shortest text that reads back to the same float.
+  RunReport run = handMadeRun();
+  run.estimator = "kernel";
+  run.grids.resize(1);
+  GridReport& grid = run.grids[0];
+  grid.kind = GridKind::Rect;
+  const float partA = 700.1234f, partB = 306.41656f;  // two sources' kernel values
+  grid.illuminance = {static_cast<double>(partA) + static_cast<double>(partB), 0.0, 1.0 / 7.0};
+  grid.metrics = gridMetrics(grid.illuminance, std::vector<int>{-1, 3, -1}, 1.0 / 3.0);
+  ASSERT_GT(significantDigits(fmt::format("{}", grid.illuminance[0])), 12);  // a double's
+
+  TempDir dir("penumbra-output-test");
+  writeResults(run, dir.path() / "out");
+  const auto csv = lines(readText(dir.path() / "out" / "work-plane.csv"));
+  const auto res = lines(readText(dir.path() / "out" / "work-plane.res"));
+  ASSERT_EQ(csv.size(), 4u);
+  ASSERT_EQ(res.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const auto f = csvFields(csv[i + 1]);
+    for (const std::string& text : {f[6], res[i]}) {
+      const float read = std::stof(text);
+      const float expected = static_cast<float>(grid.illuminance[i]);
+      EXPECT_EQ(std::bit_cast<std::uint32_t>(read), std::bit_cast<std::uint32_t>(expected)) << text;
+      EXPECT_LE(significantDigits(text), 9) << text;
+    }
+    // The position is the host's double: all its digits, read back exactly.
+    EXPECT_EQ(std::stod(f[0]), grid.points[i].position.x()) << f[0];
+  }
+  EXPECT_EQ(csv[2].substr(0, csv[2].find(',')), fmt::format("{}", 1.0 / 3.0));  // 16 digits
+
+  const std::string summary = readText(dir.path() / "out" / "summary.json");
+  for (const auto& [key, value] :
+       {std::pair{"Eavg_lx", grid.metrics.eAvg}, std::pair{"Emax_lx", grid.metrics.eMax},
+        std::pair{"U0", grid.metrics.u0}}) {
+    const std::string text = jsonNumberText(summary, key);
+    ASSERT_FALSE(text.empty()) << key;
+    EXPECT_EQ(std::bit_cast<std::uint32_t>(std::stof(text)),
+              std::bit_cast<std::uint32_t>(static_cast<float>(value)))
+        << key << ": " << text;
+    EXPECT_LE(significantDigits(text), 9) << key << ": " << text;
+  }
+  // The spacing is a double of the geometry: its 16 digits stay.
+  EXPECT_EQ(jsonNumberText(summary, "spacing_m"), fmt::format("{}", 1.0 / 3.0));
+
+  // The host reference computes in double: the same E keeps every digit.
+  run.estimator = "reference";
+  writeResults(run, dir.path() / "reference");
+  const auto reference = lines(readText(dir.path() / "reference" / "work-plane.res"));
+  EXPECT_EQ(reference[0], fmt::format("{}", grid.illuminance[0]));
+  EXPECT_EQ(std::stod(reference[0]), grid.illuminance[0]);
 }
 
 TEST(ResultFiles, UndefinedMetricsAreNullInJson) {
@@ -415,6 +497,29 @@ TEST(SummaryTable, UniformityOnlyForAreas) {
             std::make_pair(fmt::format("{:.3f}", (1.0 / 7.0) / eAvg),
                            fmt::format("{:.3f}", (1.0 / 7.0) / 512.3456789012345)));
   EXPECT_EQ(lastTwo(rows[4]), std::make_pair(std::string("-"), std::string("-")));
+}
+
+// What E includes names the maintenance where a factor is below 1, in the summary, the table's
+// first line and the render metadata alike.
+TEST(IlluminanceMeaning, NamesTheMaintenanceFactorWhereOneApplies) {
+  RunReport run = handMadeRun();
+  LuminaireReport panel, downlight;
+  panel.name = "panel";
+  downlight.name = "downlight";
+  run.luminaires = {panel, downlight};  // both new: MF 1
+  EXPECT_EQ(summaryJson(run)["illuminance"], "direct only");
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: direct illuminance only");
+  run.luminaires[0].maintenanceFactor = run.luminaires[1].maintenanceFactor = 0.8;
+  EXPECT_EQ(summaryJson(run)["illuminance"], "direct only, maintained, MF 0.8");
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: direct illuminance only, maintained, MF 0.8");
+  run.luminaires[1].maintenanceFactor = 1.0;
+  run.interreflection = InterreflectionReport{};
+  const std::string each = "maintained (MF per luminaire: panel 0.8, downlight 1)";
+  EXPECT_EQ(summaryJson(run)["illuminance"], "total (direct + interreflected), " + each);
+  EXPECT_EQ(lines(summaryTable(run))[0], "E: total illuminance (direct + interreflected), " + each);
+  RenderReport render;
+  render.luminaires = run.luminaires;
+  EXPECT_EQ(renderJson(render)["light"], "direct only, " + each);
 }
 
 }  // namespace

@@ -331,6 +331,17 @@ TEST(SweepCharts, GridCombinationsGiveOneSeriesPerOtherValue) {
   EXPECT_EQ(charts[3].chart.series[0].x, (std::vector<double>{10, 20}));
 }
 
+TEST(SweepCharts, AMetricUndefinedInEveryCaseHasNoChart) {
+  // A point list's U0 is undefined in every case: Eavg is charted against a and b, U0 not at all.
+  const StudyLayout layout = twoByThree({"work-plane"});
+  std::vector<CaseRecord> records = recordsOf(layout);
+  for (CaseRecord& r : records) r.grids[0].metrics.u0 = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<ChartFile> charts = studyCharts(layout, records);
+  ASSERT_EQ(charts.size(), 2u);
+  EXPECT_EQ(charts[0].fileName, "Eavg_lx-vs-a.png");
+  EXPECT_EQ(charts[1].fileName, "Eavg_lx-vs-b.png");
+}
+
 TEST(SweepCharts, ZipGivesOneSeriesAndFixedParametersNone) {
   StudyLayout layout = twoByThree({"work-plane"});
   layout.combination = Combination::Zip;

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -220,6 +222,111 @@ TEST(SweepRenders, AutoFirstExposesEveryCaseWithTheFirstCasesWhite) {
     EXPECT_EQ(stats["method"], "clip") << folder;
     EXPECT_EQ(stats["white_cdm2"], white) << folder;
   }
+}
+
+// kScene with the panel's flux varied, 3000 and 6000 lm: direct light only, the second case's
+// luminance is twice the first's at every pixel.
+RenderSweep fluxSweep(const fs::path& dir, const std::string& exposure) {
+  RenderSweep sweep = renderSweep(dir, exposure);
+  std::string scene = kScene;
+  scene.replace(scene.find("flux: 3000"), 10, "flux: \"${flux}\"");
+  scene.replace(scene.find("{floor_reflectance: 0.2}"), 24, "{floor_reflectance: 0.2, flux: 3000}");
+  write(dir / "scene.yaml", scene);
+  write(dir / "study.yaml",
+        "penumbra-study: 1\nscene: scene.yaml\nparameters:\n  flux: [3000, "
+        "6000]\nrenders: [corner]\n");
+  sweep.study = loadStudy(dir / "study.yaml");
+  sweep.study.renderExposure = exposure;
+  return sweep;
+}
+
+// The largest channel of each pixel of a case's PNG.
+std::vector<int> drives(const fs::path& png) {
+  const DisplayImage image = readPng(png);
+  std::vector<int> values;
+  for (size_t at = 0; at < image.values.size(); at += image.channels)
+    values.push_back(*std::max_element(&image.values[at], &image.values[at] + 3));
+  return values;
+}
+
+// auto-all: one white for the whole study, the geometric mean of the cases' own automatic whites
+// (each computed here from the case's .exr); with it a pixel of twice the luminance shows twice
+// the drive value. Exposed case by case instead, the two PNGs are the same picture.
+TEST(SweepRenders, AutoAllExposesTheWholeStudyWithOneWhite) {
+  TempDir dir("penumbra-sweep-renders");
+  SweepObserver silent;
+  fs::create_directories(dir.path() / "each");
+  const RenderSweep each = fluxSweep(dir.path() / "each", "");
+  runSweep(each.study, each.settings, silent);
+  EXPECT_EQ(drives(dir.path() / "each/out/cases/case-001/corner.png"),
+            drives(dir.path() / "each/out/cases/case-002/corner.png"));
+
+  fs::create_directories(dir.path() / "all");
+  const RenderSweep sweep = fluxSweep(dir.path() / "all", "auto-all");
+  runSweep(sweep.study, sweep.settings, silent);
+  std::array<double, 2> own{};
+  std::array<RgbImage, 2> luminance;
+  for (int c = 0; c < 2; ++c) {
+    const fs::path folder = dir.path() / "all/out/cases" / (c == 0 ? "case-001" : "case-002");
+    luminance[c] = readRgbExr(folder / "corner.exr");
+    ToneMapOptions automatic;
+    automatic.method = DisplayMethod::Clip;
+    ToneMapStats stats;
+    toneMap(luminance[c], readFaceIdExr(folder / "corner.faceid.exr"), automatic, &stats);
+    own[c] = stats.white;
+  }
+  EXPECT_NEAR(own[1], 2.0 * own[0], 1e-5 * own[1]);  // luminance ∝ flux
+  const auto kept = nlohmann::json::parse(readText(dir.path() / "all/out/exposure.json"));
+  const double white = kept["white_cdm2"];
+  EXPECT_NEAR(white, std::sqrt(own[0] * own[1]), 1e-12 * white);
+  EXPECT_EQ(kept["pictures"], 2);
+  const double black = ToneMapOptions{}.black;
+  std::array<std::vector<int>, 2> drive;
+  for (int c = 0; c < 2; ++c) {
+    const fs::path folder = dir.path() / "all/out/cases" / (c == 0 ? "case-001" : "case-002");
+    const auto stats = nlohmann::json::parse(readText(folder / "corner.tonemap.json"));
+    EXPECT_EQ(stats["white_cdm2"], white);
+    drive[c] = drives(folder / "corner.png");
+  }
+  int doubled = 0;
+  for (size_t i = 0; i < drive[0].size(); ++i) {
+    const int x = static_cast<int>(i) % luminance[0].width,
+              y = static_cast<int>(i) / luminance[0].width;
+    for (int c = 0; c < 2; ++c) {
+      const float* rgb = luminance[c].pixel(x, y);
+      const double v = std::clamp(std::max({rgb[0], rgb[1], rgb[2]}) / white, black, 1.0);
+      EXPECT_NEAR(drive[c][i], 255.0 * v, 0.5 + 1e-3) << x << "," << y;
+    }
+    // Between black and white in both: twice the drive value, to the rounding of each.
+    if (drive[0][i] > 255.0 * black + 1 && drive[1][i] < 255) {
+      EXPECT_NEAR(drive[1][i], 2.0 * drive[0][i], 1.5) << x << "," << y;
+      ++doubled;
+    }
+  }
+  EXPECT_GT(doubled, 48 * 32 / 4);
+}
+
+// auto-all over runs: a later run (a shard, --resume) exposes again the cases an earlier one
+// wrote, so that every case of the folder shares the white of all of them.
+TEST(SweepRenders, AutoAllExposesAgainTheCasesOfEarlierRuns) {
+  TempDir dir("penumbra-sweep-renders");
+  SweepObserver silent;
+  const auto whiteOf = [&](const char* folder) {
+    return nlohmann::json::parse(
+               readText(dir.path() / "out/cases" / folder / "corner.tonemap.json"))["white_cdm2"]
+        .get<double>();
+  };
+  RenderSweep first = fluxSweep(dir.path(), "auto-all");
+  first.settings.shard = Shard{1, 2};
+  runSweep(first.study, first.settings, silent);
+  const double alone = whiteOf("case-001");  // its own automatic white: the only picture
+  EXPECT_FALSE(fs::exists(dir.path() / "out/cases/case-002"));
+  RenderSweep second = fluxSweep(dir.path(), "auto-all");
+  second.settings.shard = Shard{2, 2};
+  runSweep(second.study, second.settings, silent);
+  // Case 2 has twice the luminance: its own white is twice case 1's, and the shared one √2 times.
+  EXPECT_NEAR(whiteOf("case-001"), std::sqrt(2.0) * alone, 1e-5 * alone);
+  EXPECT_EQ(whiteOf("case-002"), whiteOf("case-001"));
 }
 
 TEST(SweepRenders, AnUnknownViewIsAnErrorNamingTheScenesViews) {

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "output/result_reader.hpp"
 #include "viz/plot_files.hpp"
 #include "viz/render_png.hpp"
 
@@ -16,20 +17,23 @@ std::string CasePlots::unavailable() const {
   return displayUnavailable();
 }
 
-std::vector<std::string> CasePlots::write(const Scene& scene, const RunReport& report,
+std::vector<std::string> CasePlots::write(const Scene& scene, const RunReport& /*report*/,
                                           const std::filesystem::path& directory) {
+  // The case's files are written: drawn from them, as `penumbra plot` draws a folder, the plots
+  // show E with the digits the files hold and are those of `penumbra grid --plot` on the case.
+  const RunReport written = readResults(directory);
   bool current = false;  // estimator_ answers for this case's scene
   const PointLight light = [&](std::span<const SamplePoint> points) {
     if (!estimator_)
       estimator_ =
-          std::make_unique<Estimator>(plotEstimatorOptions(report, options_.device), scene);
+          std::make_unique<Estimator>(plotEstimatorOptions(written, options_.device), scene);
     else if (!current)
       estimator_->setScene(scene);  // the case's scene replaces the last one
     current = true;
     return estimator_->illuminance(points).total;
   };
   std::vector<std::string> images;
-  for (const PlotFile& file : drawPlots(report, scene, light, options_, directory)) {
+  for (const PlotFile& file : drawPlots(written, scene, light, options_, directory)) {
     if (file.image) images.push_back(file.name);
   }
   return images;

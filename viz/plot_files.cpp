@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "grid/scene_grids.hpp"
 #include "output/result_files.hpp"
 #include "scene/scene_loader.hpp"
 #include "viz/colour_scale.hpp"
@@ -111,8 +112,11 @@ EstimatorOptions plotEstimatorOptions(const RunReport& run, const std::string& d
   return estimator;
 }
 
-std::string plotLightName(const RunReport& run) {
-  return run.interreflection ? "total (direct + interreflected)" : "direct light only";
+std::string plotLightName(const RunReport& run, const Scene& scene) {
+  const std::string maintenance = maintenanceMeaning(luminaireReports(scene));
+  return std::string(run.interreflection ? "total (direct + interreflected)"
+                                         : "direct light only") +
+         (maintenance.empty() ? "" : ", " + maintenance);
 }
 
 std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const PointLight& light,
@@ -143,7 +147,7 @@ std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const 
   if (withSurfaces) {
     if (progress) progress("illuminance on the room's surfaces");
     const SurfacesPlot surfaces =
-        plotSurfaces(scene, light, plotLightName(run), options, sceneName, directory);
+        plotSurfaces(scene, light, plotLightName(run, scene), options, sceneName, directory);
     written.push_back(
         {"surfaces.vtp",
          fmt::format("surfaces.vtp ({} points, {} m apart)", surfaces.points, surfaces.spacing),

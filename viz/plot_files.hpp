@@ -31,8 +31,9 @@ std::vector<std::string> plotFileNames(const RunReport& run, bool withSurfaces);
 // otherwise; on `device`.
 EstimatorOptions plotEstimatorOptions(const RunReport& run, const std::string& device);
 // What the plots' E includes, for their titles: "total (direct + interreflected)" or "direct
-// light only".
-std::string plotLightName(const RunReport& run);
+// light only", and the maintenance of `scene`'s luminaires where a factor is below 1
+// (maintenanceMeaning).
+std::string plotLightName(const RunReport& run, const Scene& scene);
 // Told the name of what is drawn next (the command's progress lines); may be empty.
 using PlotProgress = std::function<void(const std::string& what)>;
 

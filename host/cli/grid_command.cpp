@@ -29,10 +29,11 @@ namespace {
 // Each grid's .csv and .res, written into the staging directory as its batches come.
 class StagedGridFiles : public GridStream {
  public:
-  StagedGridFiles(const std::filesystem::path& directory, const Scene& scene, bool withParts)
-      : directory_(directory), scene_(scene), withParts_(withParts) {}
+  StagedGridFiles(const std::filesystem::path& directory, const Scene& scene, bool withParts,
+                  NumberDigits digits)
+      : directory_(directory), scene_(scene), withParts_(withParts), digits_(digits) {}
   void start(const CalculationGrid& grid) override {
-    files_.emplace(directory_, scene_, grid, withParts_);
+    files_.emplace(directory_, scene_, grid, withParts_, digits_);
   }
   void write(const GridBatch& batch) override { files_->write(batch); }
   void finish() override {
@@ -44,6 +45,7 @@ class StagedGridFiles : public GridStream {
   std::filesystem::path directory_;
   const Scene& scene_;
   bool withParts_;
+  NumberDigits digits_;
   std::optional<GridFileWriter> files_;
 };
 
@@ -86,7 +88,8 @@ int run(const GridOptions& options) {
   for (const CalculationGrid* grid : grids) gridNames.push_back(grid->name);
   resultFileNames(gridNames);  // refuses clashing names before anything is created
   StagedDirectory staged(options.output);
-  StagedGridFiles files(staged.staging(), scene, report.interreflection.has_value());
+  StagedGridFiles files(staged.staging(), scene, report.interreflection.has_value(),
+                        illuminanceDigits(report));
   ProgressLine progress(!options.quiet);
   report.grids = streamGrids(scene, grids, estimator, files, &progress);
   report.totalSeconds = secondsSince(start);

@@ -32,9 +32,9 @@ CLI::Validator checkedBy(Parse parse, const std::string& name) {
 inline const CLI::Validator kParameterAssignment =
     checkedBy([](const std::string& text) { parseParameterAssignment(text); }, "NAME=VALUE");
 
-// `sweep --exposure`: a white in cd/m², or auto-first.
-inline const CLI::Validator kStudyExposure =
-    checkedBy([](const std::string& text) { parseRenderExposure(text); }, "CDM2|auto-first");
+// `sweep --exposure`: a white in cd/m², auto-first or auto-all.
+inline const CLI::Validator kStudyExposure = checkedBy(
+    [](const std::string& text) { parseRenderExposure(text); }, "CDM2|auto-first|auto-all");
 
 // --device: the OpenCL device a command computes on.
 inline void addDeviceOption(CLI::App& command, std::string& device) {

@@ -105,7 +105,8 @@ int run(const RenderCommandOptions& options) {
                                                s.indirectSeconds, s.gatheredSamples)
                                  : std::string());
     }
-    fmt::print("light: {}\n", illuminanceMeaning(report.interreflection.has_value()));
+    fmt::print("light: {}\n",
+               illuminanceMeaning(report.interreflection.has_value(), report.luminaires));
     fmt::print("renders in {}\n", normalizedTarget(options.output).string());
   }
   return 0;

@@ -44,11 +44,14 @@ inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
   command
       ->add_option("--exposure", options.exposure,
                    "Renders (`renders:`) with one fixed exposure for the whole study, so that "
-                   "they compare: a luminance in cd/m2 shown as white, or auto-first (the "
-                   "automatic exposure of the first case rendered, kept for every other)")
+                   "they compare: a luminance in cd/m2 shown as white, auto-first (the "
+                   "automatic exposure of the first case rendered, kept for every other) or "
+                   "auto-all (the automatic exposure of all the study's renders together: once "
+                   "the cases are done, every PNG is exposed again with the geometric mean of "
+                   "the pictures' automatic whites, kept in OUT/exposure.json)")
       ->check(kStudyExposure)
       ->excludes(slurm)
-      ->type_name("CDM2|auto-first");
+      ->type_name("CDM2|auto-first|auto-all");
   return command;
 }
 

@@ -8,8 +8,8 @@
 namespace penumbra {
 
 GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                               const CalculationGrid& grid, bool withParts)
-    : grid_(&grid), withParts_(withParts) {
+                               const CalculationGrid& grid, bool withParts, NumberDigits digits)
+    : grid_(&grid), withParts_(withParts), rows_(digits) {
   for (const Solid& solid : scene.solids) insideNames_.push_back(csvField(solid.name));
   const std::string stem = gridFileStem(grid.name);
   csvPath_ = directory / (stem + ".csv");

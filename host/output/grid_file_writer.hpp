@@ -27,9 +27,10 @@ class GridFileWriter {
  public:
   // Creates <directory>/<stem>.csv, .res and .pts (gridFileStem) and writes the CSV header. `grid`
   // must outlive the writer.
-  // With `withParts`, the CSV has the direct and indirect columns (grid_rows.hpp).
+  // With `withParts`, the CSV has the direct and indirect columns (grid_rows.hpp); E is written
+  // with `digits` (illuminanceDigits).
   GridFileWriter(const std::filesystem::path& directory, const Scene& scene,
-                 const CalculationGrid& grid, bool withParts = false);
+                 const CalculationGrid& grid, bool withParts, NumberDigits digits);
   // Without close(): stops after the batch being written; the files stay as they are.
   ~GridFileWriter();
   GridFileWriter(const GridFileWriter&) = delete;

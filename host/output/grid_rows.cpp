@@ -31,14 +31,14 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminan
   std::memcpy(point, csv_.data() + start, pointSize);
   std::replace(point, point + pointSize, ',', ' ');
   point[pointSize - 1] = '\n';
-  out = writeNumber(out, illuminance);  // E hardly ever repeats: not looked up
+  out = writeNumber(out, illuminance, illuminanceDigits_);  // E hardly ever repeats: not looked up
   const auto eSize = static_cast<std::size_t>(out - e);
   addResLine(e, eSize);
   *out++ = ',';
   if (direct != nullptr) {
-    out = writeNumber(out, *direct);
+    out = writeNumber(out, *direct, illuminanceDigits_);
     *out++ = ',';
-    out = writeNumber(out, illuminance - *direct);
+    out = writeNumber(out, illuminance - *direct, illuminanceDigits_);
     *out++ = ',';
   }
   if (!insideField.empty()) std::memcpy(out, insideField.data(), insideField.size());
@@ -66,7 +66,7 @@ char* GridRows::writePoint(char* out, const Vec3& position, const Vec3& normal, 
 
 void GridRows::addIlluminance(double illuminance) {
   char text[kMaxNumberText];
-  const char* end = writeNumber(text, illuminance);
+  const char* end = writeNumber(text, illuminance, illuminanceDigits_);
   addResLine(text, static_cast<std::size_t>(end - text));
 }
 

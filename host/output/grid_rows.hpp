@@ -3,12 +3,15 @@
 //   <grid>.csv   x_m,y_m,z_m,nx,ny,nz,E_lx,inside   one row per point; `inside` the name of the
 //                solid containing the point as a CSV field, empty for none. With interreflection
 //                x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside: E_lx the total,
-//                E_indirect_lx = E_lx - E_direct_lx
+//                E_indirect_lx = E_lx - E_direct_lx (each rounded to the digits E holds, so the
+//                identity holds to half an ulp of each)
 //   <grid>.res   E_lx (the total), one value a line
 //   <grid>.pts   x y z nx ny nz (m; unit normal), one point a line in the order of .res: the
 //                points as Radiance's rtrace reads them, so that .res and .pts go together
 // Numbers are written as number_text.hpp says (fmt's "{}": the shortest text that reads back to
-// the same double).
+// the same double). E is written with the digits its computation holds: those of a float for
+// the kernels (single precision, at most 9 significant digits), those of a double for the host
+// reference; coordinates and normals are host doubles.
 #include <fmt/format.h>
 
 #include <string_view>
@@ -29,6 +32,8 @@ inline std::string_view gridCsvHeader(bool withParts) {
 // cleared, so that writing a batch allocates nothing once the buffers have grown to a batch.
 class GridRows {
  public:
+  // `illuminance`: the digits E is written with (number_text.hpp).
+  explicit GridRows(NumberDigits illuminance) : illuminanceDigits_(illuminance) {}
   // Appends the point's CSV row and its .res line; `insideField` is already a CSV field.
   void add(const Vec3& position, const Vec3& normal, double illuminance,
            std::string_view insideField);
@@ -56,6 +61,7 @@ class GridRows {
   void addRow(const Vec3& position, const Vec3& normal, double illuminance, const double* direct,
               std::string_view insideField);
 
+  NumberDigits illuminanceDigits_;
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
   fmt::memory_buffer csv_, res_, pts_;
 };

@@ -1,6 +1,8 @@
 #include "output/number_text.hpp"
 
 #include <bit>
+#include <charconv>
+#include <cmath>
 #include <cstring>
 
 namespace penumbra {
@@ -23,6 +25,15 @@ char* NumberTextCache::write(char* out, double value) {
     std::memcpy(entry.text, out, size);
   }
   return end;
+}
+
+double withDigits(double value, NumberDigits digits) {
+  if (digits == NumberDigits::Double || !std::isfinite(value)) return value;
+  char text[kMaxNumberText];
+  const char* end = writeNumber(text, value, digits);
+  double shortest = value;
+  std::from_chars(text, end, shortest);
+  return shortest;
 }
 
 }  // namespace penumbra

@@ -31,18 +31,19 @@ std::string maintenanceFactors(const std::vector<LuminaireReport>& luminaires) {
 
 // What every image of a view carries in its header.
 ImageMetadata viewMetadata(const RenderReport& report, const View& view, const std::string& units) {
-  ImageMetadata metadata{{"penumbra:version", report.version},
-                         {"penumbra:scene", report.sceneFile.string()},
-                         {"penumbra:parameters", describeParameters(report.parameters)},
-                         {"penumbra:view", view.name},
-                         {"penumbra:eye_m", vec3Text(view.eye)},
-                         {"penumbra:target_m", vec3Text(view.target)},
-                         {"penumbra:up", vec3Text(view.up)},
-                         {"penumbra:fov_deg", fmt::format("{}", view.fovDegrees)},
-                         {"penumbra:interval", std::to_string(report.interval)},
-                         {"penumbra:spp", std::to_string(report.spp)},
-                         {"penumbra:light", illuminanceMeaning(report.interreflection.has_value())},
-                         {"penumbra:units", units}};
+  ImageMetadata metadata{
+      {"penumbra:version", report.version},
+      {"penumbra:scene", report.sceneFile.string()},
+      {"penumbra:parameters", describeParameters(report.parameters)},
+      {"penumbra:view", view.name},
+      {"penumbra:eye_m", vec3Text(view.eye)},
+      {"penumbra:target_m", vec3Text(view.target)},
+      {"penumbra:up", vec3Text(view.up)},
+      {"penumbra:fov_deg", fmt::format("{}", view.fovDegrees)},
+      {"penumbra:interval", std::to_string(report.interval)},
+      {"penumbra:spp", std::to_string(report.spp)},
+      {"penumbra:light", illuminanceMeaning(report.interreflection.has_value(), report.luminaires)},
+      {"penumbra:units", units}};
   if (!report.luminaires.empty())
     metadata.push_back({"penumbra:maintenance_factor", maintenanceFactors(report.luminaires)});
   return metadata;
@@ -99,7 +100,7 @@ nlohmann::json renderJson(const RenderReport& report) {
       {"interval", report.interval},
       {"spp", report.spp},
       {"display", report.display},
-      {"light", illuminanceMeaning(report.interreflection.has_value())},
+      {"light", illuminanceMeaning(report.interreflection.has_value(), report.luminaires)},
       {"units", {{"luminance", "cd/m2"}, {"illuminance", "lx"}}},
       {"total_s", report.totalSeconds},
       {"views", views},

@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <set>
 #include <stdexcept>
 
@@ -106,11 +108,15 @@ std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNam
   return names;
 }
 
-void writeGridCsv(std::ostream& out, const GridReport& grid) {
+NumberDigits illuminanceDigits(const RunReport& report) {
+  return report.estimator == "reference" ? NumberDigits::Double : NumberDigits::Float;
+}
+
+void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits) {
   const bool withParts = !grid.direct.empty();
   const std::string_view header = gridCsvHeader(withParts);
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
-  GridRows rows;
+  GridRows rows(digits);
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
     if (withParts) {
       rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i], grid.direct[i],
@@ -128,7 +134,7 @@ void writeGridCsv(std::ostream& out, const GridReport& grid) {
 }
 
 void writeGridPts(std::ostream& out, const GridReport& grid) {
-  GridRows rows;
+  GridRows rows(NumberDigits::Double);  // E is not written
   for (const SamplePoint& point : grid.points) {
     rows.addPoint(point.position, point.normal);
     if (rows.pts().size() > (1u << 20)) {
@@ -139,8 +145,8 @@ void writeGridPts(std::ostream& out, const GridReport& grid) {
   out.write(rows.pts().data(), static_cast<std::streamsize>(rows.pts().size()));
 }
 
-void writeGridRes(std::ostream& out, const GridReport& grid) {
-  GridRows rows;
+void writeGridRes(std::ostream& out, const GridReport& grid, NumberDigits digits) {
+  GridRows rows(digits);
   for (std::size_t i = 0; i < grid.illuminance.size(); ++i) {
     rows.addIlluminance(grid.illuminance[i]);
     if (rows.res().size() > (1u << 20)) {
@@ -151,12 +157,31 @@ void writeGridRes(std::ostream& out, const GridReport& grid) {
   out.write(rows.res().data(), static_cast<std::streamsize>(rows.res().size()));
 }
 
-std::string illuminanceMeaning(bool interreflection) {
-  return interreflection ? "total (direct + interreflected)" : "direct only";
+std::string maintenanceMeaning(const std::vector<LuminaireReport>& luminaires) {
+  const bool maintained =
+      std::any_of(luminaires.begin(), luminaires.end(),
+                  [](const LuminaireReport& l) { return l.maintenanceFactor != 1.0; });
+  if (!maintained) return "";
+  const bool shared =
+      std::all_of(luminaires.begin(), luminaires.end(), [&](const LuminaireReport& l) {
+        return l.maintenanceFactor == luminaires.front().maintenanceFactor;
+      });
+  if (shared) return fmt::format("maintained, MF {}", luminaires.front().maintenanceFactor);
+  std::string each;
+  for (const LuminaireReport& l : luminaires)
+    each += fmt::format("{}{} {}", each.empty() ? "" : ", ", l.name, l.maintenanceFactor);
+  return "maintained (MF per luminaire: " + each + ")";
+}
+
+std::string illuminanceMeaning(bool interreflection,
+                               const std::vector<LuminaireReport>& luminaires) {
+  const std::string maintenance = maintenanceMeaning(luminaires);
+  return std::string(interreflection ? "total (direct + interreflected)" : "direct only") +
+         (maintenance.empty() ? "" : ", " + maintenance);
 }
 
 std::string illuminanceMeaning(const RunReport& report) {
-  return illuminanceMeaning(report.interreflection.has_value());
+  return illuminanceMeaning(report.interreflection.has_value(), report.luminaires);
 }
 
 nlohmann::json interreflectionJson(const InterreflectionReport& r) {
@@ -199,7 +224,29 @@ nlohmann::json luminairesJson(const std::vector<LuminaireReport>& reports) {
   return luminaires;
 }
 
+namespace {
+
+nlohmann::json metricsJson(const GridMetrics& metrics, GridKind kind, NumberDigits digits) {
+  const GridMetrics m = reportedMetrics(metrics, kind, digits);
+  return {{"Eavg_lx", number(m.eAvg)},
+          {"Emin_lx", number(m.eMin)},
+          {"Emax_lx", number(m.eMax)},
+          {"U0", number(m.u0)},
+          {"Ud", number(m.ud)}};
+}
+
+}  // namespace
+
+GridMetrics reportedMetrics(const GridMetrics& metrics, GridKind kind, NumberDigits digits) {
+  GridMetrics m = metrics;
+  for (double* value : {&m.eAvg, &m.eMin, &m.eMax, &m.u0, &m.ud})
+    *value = withDigits(*value, digits);
+  if (kind == GridKind::Points) m.u0 = m.ud = std::numeric_limits<double>::quiet_NaN();
+  return m;
+}
+
 nlohmann::json summaryJson(const RunReport& report) {
+  const NumberDigits digits = illuminanceDigits(report);
   nlohmann::json grids = nlohmann::json::array();
   for (const GridReport& grid : report.grids) {
     const GridMetrics& m = grid.metrics;
@@ -217,21 +264,10 @@ nlohmann::json summaryJson(const RunReport& report) {
         {"points", m.points},
         {"points_inside_solids", m.pointsInsideSolids},
         {"spacing_m", m.spacing > 0.0 ? number(m.spacing) : nlohmann::json(nullptr)},
-        {"Eavg_lx", number(m.eAvg)},
-        {"Emin_lx", number(m.eMin)},
-        {"Emax_lx", number(m.eMax)},
-        {"U0", number(m.u0)},
-        {"Ud", number(m.ud)},
         {"time_s", grid.seconds},
     });
-    if (grid.directMetrics) {
-      const GridMetrics& d = *grid.directMetrics;
-      entry["direct"] = {{"Eavg_lx", number(d.eAvg)},
-                         {"Emin_lx", number(d.eMin)},
-                         {"Emax_lx", number(d.eMax)},
-                         {"U0", number(d.u0)},
-                         {"Ud", number(d.ud)}};
-    }
+    entry.update(metricsJson(m, grid.kind, digits));
+    if (grid.directMetrics) entry["direct"] = metricsJson(*grid.directMetrics, grid.kind, digits);
     grids.push_back(std::move(entry));
   }
   nlohmann::json summary = {
@@ -263,10 +299,13 @@ nlohmann::json summaryJson(const RunReport& report) {
 
 void writeResultFiles(const RunReport& report, const std::filesystem::path& directory) {
   resultFileNames(report);  // refuses clashing names before anything is created
+  const NumberDigits digits = illuminanceDigits(report);
   for (const GridReport& grid : report.grids) {
     const std::string stem = gridFileStem(grid.name);
-    writeFile(directory / (stem + ".csv"), [&](std::ostream& out) { writeGridCsv(out, grid); });
-    writeFile(directory / (stem + ".res"), [&](std::ostream& out) { writeGridRes(out, grid); });
+    writeFile(directory / (stem + ".csv"),
+              [&](std::ostream& out) { writeGridCsv(out, grid, digits); });
+    writeFile(directory / (stem + ".res"),
+              [&](std::ostream& out) { writeGridRes(out, grid, digits); });
     writeFile(directory / (stem + ".pts"), [&](std::ostream& out) { writeGridPts(out, grid); });
   }
   writeSummaryFile(report, directory);

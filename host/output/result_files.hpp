@@ -4,7 +4,8 @@
 //   <grid>.res     E in lx, one value a line, same order (what `rtrace -h -ov` gives Radiance
 //                  users)
 //   summary.json   scene, device, timing and the metrics of every grid, units in the key names
-// Numbers are written in the shortest form that reads back to the same double (grid_rows.hpp).
+// Numbers are written in the shortest form that reads back to the same double, and E and the
+// metrics of a kernel run in the shortest that reads back to the same float (grid_rows.hpp).
 // A grid computed batch by batch goes to its files through GridFileWriter (grid_file_writer.hpp).
 #include <filesystem>
 #include <functional>
@@ -16,6 +17,7 @@
 
 #include "grid/grid_evaluation.hpp"
 #include "grid/run_report.hpp"
+#include "output/number_text.hpp"
 
 namespace penumbra {
 
@@ -37,13 +39,28 @@ GridKind gridKindFromName(const std::string& name);
 std::vector<std::string> resultFileNames(const RunReport& report);
 std::vector<std::string> resultFileNames(const std::vector<std::string>& gridNames);
 
-void writeGridCsv(std::ostream& out, const GridReport& grid);
-void writeGridRes(std::ostream& out, const GridReport& grid);
+// The digits E and its metrics hold in `report`: a float's for the kernel estimator (single
+// precision on the device), a double's for the host reference.
+NumberDigits illuminanceDigits(const RunReport& report);
+
+// The metrics as the files give them: with the digits E holds, and U0 and Ud undefined (NaN) for
+// a point list, whose scattered sensors make no area to be uniform over.
+GridMetrics reportedMetrics(const GridMetrics& metrics, GridKind kind, NumberDigits digits);
+
+// `digits`: those of E (illuminanceDigits).
+void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits);
+void writeGridRes(std::ostream& out, const GridReport& grid, NumberDigits digits);
 void writeGridPts(std::ostream& out, const GridReport& grid);
 nlohmann::json summaryJson(const RunReport& report);
-// What E includes, in words: "total (direct + interreflected)" or "direct only".
+// What E includes, in words: "total (direct + interreflected)" or "direct only", followed by
+// the luminaires' maintenance (maintenanceMeaning) where one has a factor below 1.
 std::string illuminanceMeaning(const RunReport& report);
-std::string illuminanceMeaning(bool interreflection);
+std::string illuminanceMeaning(bool interreflection,
+                               const std::vector<LuminaireReport>& luminaires);
+// The maintenance the luminaires' light includes: "" when every maintenance factor is 1 (or
+// there are no luminaires), "maintained, MF 0.8" when all share one, otherwise "maintained (MF
+// per luminaire: panel 0.8, downlight 0.9)".
+std::string maintenanceMeaning(const std::vector<LuminaireReport>& luminaires);
 // The interreflection solver's report and the photometric luminaires, as summary.json and
 // render.json give them.
 nlohmann::json interreflectionJson(const InterreflectionReport& report);

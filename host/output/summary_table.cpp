@@ -7,6 +7,8 @@
 #include <cmath>
 #include <vector>
 
+#include "output/result_files.hpp"
+
 namespace penumbra {
 
 namespace {
@@ -67,9 +69,12 @@ std::string summaryTable(const RunReport& report) {
   for (const Row& row : rows) {
     for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], columnsOf(row[c]));
   }
+  const std::string maintenance = maintenanceMeaning(report.luminaires);
   std::string table =
-      fmt::format("E: {}\n", report.interreflection ? "total illuminance (direct + interreflected)"
-                                                    : "direct illuminance only");
+      fmt::format("E: {}{}\n",
+                  report.interreflection ? "total illuminance (direct + interreflected)"
+                                         : "direct illuminance only",
+                  maintenance.empty() ? "" : ", " + maintenance);
   if (!luminaires.empty()) table += "Luminaires: " + luminaires + "\n";
   const auto appendRow = [&](const Row& row) {
     for (std::size_t c = 0; c < row.size(); ++c) {

@@ -95,8 +95,11 @@ std::vector<ChartFile> studyCharts(const StudyLayout& layout,
     for (StudyMetric metric : layout.metrics) {
       for (const std::string& x : varied) {
         const std::string stem = gridFileStem(metricColumn(layout, metric, grid) + "-vs-" + x);
-        charts.push_back(
-            ChartFile{chartOf(layout, records, grid, metric, x, varied), stem + ".png"});
+        LineChart chart = chartOf(layout, records, grid, metric, x, varied);
+        // A metric undefined in every case (a point list's U0) has nothing to draw.
+        const bool empty = std::all_of(chart.series.begin(), chart.series.end(),
+                                       [](const ChartSeries& s) { return s.x.empty(); });
+        if (!empty) charts.push_back(ChartFile{std::move(chart), stem + ".png"});
       }
     }
   }

@@ -8,9 +8,11 @@
 #include <fmt/format.h>
 
 #include "grid/scene_grids.hpp"
+#include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
 #include "study/results_table.hpp"
 #include "study/study_charts.hpp"
+#include "study/study_exposure.hpp"
 #include "study/study_plan.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -162,13 +164,17 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     report.totalSeconds = secondsSince(start);
 
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
-    for (const GridReport& g : report.grids) record.grids.push_back({g.name, g.metrics});
+    for (const GridReport& g : report.grids) {
+      record.grids.push_back(
+          {g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report))});
+    }
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
     writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
     ++summary.computed;
     if (stale) ++summary.recomputed;
     observer.caseFinished(record, secondsSince(start));
   }
+  if (exposedAsOne(layout)) exposeStudyRenders(settings.output, layout);
   summary.table = writeStudyTables(settings.output, layout, settings.charts);
   return summary;
 }
@@ -210,6 +216,8 @@ TableSummary mergeSweeps(const std::vector<fs::path>& inputs, const fs::path& ou
       break;
     }
   }
+  // Each shard exposed its own cases as one; the joined study is exposed as one again.
+  if (exposedAsOne(layout)) exposeStudyRenders(output, layout);
   return writeStudyTables(output, layout, charts);
 }
 
