@@ -14,6 +14,9 @@
 #include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
 #include "grid/grid_metrics.hpp"
+#include "grid/run_report.hpp"
+#include "output/grid_rows.hpp"
+#include "output/summary_table.hpp"
 #include "radiosity/element_quadrature.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "scene/daylight.hpp"
@@ -327,6 +330,35 @@ TEST(DaylightFactor, FiguresOfAKnownSetOfValues) {
   for (std::size_t k = 0; k < std::size(shares); ++k)
     EXPECT_DOUBLE_EQ(m.shareAtLeast[k], shares[k]) << kDaylightFactorTargets[k];
   EXPECT_DOUBLE_EQ(daylightMetrics({100.0, 500.0, 300.0}, {}, 10000.0).median, 3.0);
+}
+
+TEST(DaylightFactor, CsvRowsCarryDfInPercentAndItsPartsAddUp) {
+  EXPECT_EQ(gridCsvHeader(true, true),
+            "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,DF_pct,DF_direct_pct,"
+            "DF_internal_pct,inside\n");
+  EXPECT_EQ(gridCsvHeader(false, true), "x_m,y_m,z_m,nx,ny,nz,E_lx,DF_pct,inside\n");
+  GridRows rows;
+  rows.setOutdoorIlluminance(10000.0);
+  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), 250.0, 200.0, "");
+  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), 125.0, "");
+  // E 250 lx of 10 000: DF 2.5 %, 2 % direct, 0.5 % internal; E 125 lx: 1.25 %.
+  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,250,200,50,2.5,2,0.5,\n1,2,0.85,0,0,1,125,1.25,\n");
+}
+
+TEST(DaylightFactor, TheTableHasADfRowPerGrid) {
+  RunReport run;
+  GridReport grid;
+  grid.name = "reference-plane";
+  grid.kind = GridKind::WorkPlane;
+  grid.daylight = daylightMetrics({100.0, 200.0, 300.0, 400.0}, {}, 10000.0);
+  run.grids.push_back(grid);
+  const std::string table = summaryTable(run);
+  EXPECT_NE(table.find("DF: daylight factor, 100 · E / 10000 lx"), std::string::npos) << table;
+  EXPECT_NE(table.find("DF >= 2 % [% of points]"), std::string::npos) << table;
+  // DFavg 2.50, median 2.50, min 1.00, uniformity 0.400, shares 100, 75, 50, 0 %.
+  EXPECT_NE(table.find("2.50 |         2.50 |      1.00 |       0.400 |"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("75.00"), std::string::npos) << table;
 }
 
 }  // namespace
