@@ -15,6 +15,7 @@
 #include "geometry/tolerance.hpp"
 #include "grid/grid_metrics.hpp"
 #include "grid/run_report.hpp"
+#include "illuminance/estimator.hpp"
 #include "output/grid_rows.hpp"
 #include "output/summary_table.hpp"
 #include "radiosity/element_quadrature.hpp"
@@ -264,6 +265,52 @@ TEST(DaylightWindow, AboveTheHeadAPointSeesOnlyGroundThroughIt) {
   // An upward point above the head has the whole window below its horizon.
   const SamplePoint up{Vec3(3.0, 0.4, 2.7), Vec3::UnitZ(), -1};
   EXPECT_EQ(exactDaylight(scene, {up}).front(), 0.0);
+}
+
+// ---- with interreflection
+
+// A uniform sky over a ground of reflectance 1 has one luminance, E_h/π, above and below the
+// horizon: the window is then an `opening:` source of that luminance, and every node of the
+// interreflection mesh, whatever its height group, must receive what it receives from that
+// source. So the total E (direct and interreflected) of both scenes agrees, on a work plane
+// and on a vertical grid, to the kernel's float rounding. The mesh is left unrefined so that
+// both runs solve on the same elements (refinement looks at each light source separately).
+TEST(DaylightInterreflection, AUniformSkyOverAWhiteGroundIsAnOpeningSourceOfItsLuminance) {
+  const std::string room =
+      "materials: {white: 0.8, grey: 0.4}\n"
+      "room:\n"
+      "  size: [6, 4, 3]\n"
+      "  materials: {floor: grey, ceiling: white, walls: white}\n"
+      "  openings:\n"
+      "    - {name: w1, wall: y0, x: 2.0, z: 0.9, width: 2.0, height: 1.5, transmittance: 0.7}\n";
+  const Scene sky = parseScene(
+      "penumbra: 1\nsky: {model: uniform, horizontal_illuminance_lx: 10000, ground_reflectance: "
+      "1}\n" +
+          room,
+      "sky.yaml");
+  const Scene source =
+      parseScene("penumbra: 1\n" + room + "sources:\n  - {name: w1-sky, opening: w1, luminance: " +
+                     std::to_string(10000.0 / kPi) + "}\n",
+                 "source.yaml");
+  std::vector<SamplePoint> points;
+  for (double x : {0.7, 3.0, 5.3})
+    for (double y : {0.6, 2.0, 3.4}) points.push_back({Vec3(x, y, 0.85), Vec3::UnitZ(), -1});
+  for (double z : {0.3, 1.1, 1.65, 2.2, 2.8})
+    points.push_back({Vec3(3.0, 3.0, z), -Vec3::UnitY(), -1});
+  EstimatorOptions options;
+  options.device = "cpu";
+  options.mesh.refinementLevels = 0;
+  Estimator fromSky(options, sky), fromSource(options, source);
+  const PointIlluminance a = fromSky.illuminance(points), b = fromSource.illuminance(points);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_GT(b.total[i], b.direct[i]) << points[i].position.transpose();  // light came back
+    worst = std::max(worst, std::abs(a.total[i] - b.total[i]) / b.total[i]);
+    EXPECT_NEAR(a.total[i], b.total[i], 1e-5 * b.total[i]) << points[i].position.transpose();
+    EXPECT_NEAR(a.direct[i], b.direct[i], 1e-5 * b.direct[i]) << points[i].position.transpose();
+  }
+  std::printf("  uniform sky over a white ground against an opening source: total E within %.2e\n",
+              worst);
 }
 
 // ---- transmittance
