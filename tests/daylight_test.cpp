@@ -36,13 +36,9 @@ constexpr double kPi = std::numbers::pi;
 // E at each point from the scene's sky and ground, exact in double: each point with its own
 // height's daylight scene.
 std::vector<double> exactDaylight(const Scene& scene, const std::vector<SamplePoint>& points) {
-  std::vector<double> e(points.size(), 0.0);
-  for (const DaylightGroup& group : daylightGroups(scene, points)) {
-    const std::vector<double> part =
-        exactIlluminance(daylightScene(scene, group.height), groupPoints(group, points)).front();
-    for (std::size_t j = 0; j < part.size(); ++j) e[group.points[j]] = part[j];
-  }
-  return e;
+  return estimateByGroup(scene, points, [](const Scene& lit, std::span<const SamplePoint> p) {
+    return exactIlluminance(lit, p).front();
+  });
 }
 
 std::vector<double> kernelDaylight(const Scene& scene, const std::vector<SamplePoint>& points,

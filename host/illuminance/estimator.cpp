@@ -68,14 +68,9 @@ PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
 
 std::vector<double> Estimator::daylightReference(const Scene& scene,
                                                  std::span<const SamplePoint> points) const {
-  if (!scene.sky) return referenceIlluminance(scene, points, referenceN_);
-  std::vector<double> e(points.size(), 0.0);
-  for (const DaylightGroup& group : daylightGroups(scene, points)) {
-    const std::vector<double> part = referenceIlluminance(daylightScene(scene, group.height),
-                                                          groupPoints(group, points), referenceN_);
-    for (std::size_t j = 0; j < part.size(); ++j) e[group.points[j]] = part[j];
-  }
-  return e;
+  return estimateByGroup(scene, points, [&](const Scene& lit, std::span<const SamplePoint> p) {
+    return referenceIlluminance(lit, p, referenceN_);
+  });
 }
 
 IlluminanceEstimator Estimator::function() {

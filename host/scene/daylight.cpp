@@ -60,13 +60,11 @@ Scene daylightScene(const Scene& scene, double height) {
     Source skySource;
     skySource.name = opening->name + ".sky";
     skySource.faces = cutPart(opening->outer, Plane{-Vec3::UnitZ(), -height}, tolerance);
+    skySource.luminance = opening->transmittance * sky.zenithLuminance();
     if (sky.model == SkyModel::CieOvercast) {
       // L_z (1 + 2 ω_z) / 3: the polynomial's scale L_z, its coefficients in ω_z.
-      skySource.luminance = opening->transmittance * sky.zenithLuminance();
       skySource.luminanceCoefficients = {1.0 / 3.0, 2.0 / 3.0};
       skySource.luminanceAxis = Vec3::UnitZ();
-    } else {
-      skySource.luminance = opening->transmittance * sky.zenithLuminance();
     }
     Source ground;
     ground.name = opening->name + ".ground";
@@ -109,6 +107,18 @@ std::vector<SamplePoint> groupPoints(const DaylightGroup& group,
   out.reserve(group.points.size());
   for (std::size_t i : group.points) out.push_back(points[i]);
   return out;
+}
+
+std::vector<double> estimateByGroup(const Scene& scene, std::span<const SamplePoint> points,
+                                    const SceneEstimate& estimate) {
+  if (!scene.sky) return estimate(scene, points);
+  std::vector<double> values(points.size(), 0.0);
+  for (const DaylightGroup& group : daylightGroups(scene, points)) {
+    const std::vector<double> part =
+        estimate(daylightScene(scene, group.height), groupPoints(group, points));
+    for (std::size_t j = 0; j < part.size(); ++j) values[group.points[j]] = part[j];
+  }
+  return values;
 }
 
 }  // namespace penumbra

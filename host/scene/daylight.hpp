@@ -19,6 +19,7 @@
 // An opening that has an `opening:` source of its own keeps that source (with the same τ) and
 // gets no sky: the explicit source wins.
 #include <cstddef>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -46,5 +47,13 @@ std::vector<DaylightGroup> daylightGroups(const Scene& scene, std::span<const Sa
 // The points of one group, in its order.
 std::vector<SamplePoint> groupPoints(const DaylightGroup& group,
                                      std::span<const SamplePoint> points);
+
+// A value per point from an estimator that takes a scene without a sky (the host references):
+// `estimate(daylightScene(scene, group height), the group's points)` for each group, put back in
+// the points' order. Without a sky: estimate(scene, points).
+using SceneEstimate =
+    std::function<std::vector<double>(const Scene&, std::span<const SamplePoint>)>;
+std::vector<double> estimateByGroup(const Scene& scene, std::span<const SamplePoint> points,
+                                    const SceneEstimate& estimate);
 
 }  // namespace penumbra
