@@ -82,8 +82,11 @@ __kernel void illuminance(
         e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, &tables)
                      ? unoccluded_face8(px, py, pz, nx, ny, nz, face, &tables)
                      : whole_face8(px, py, pz, nx, ny, nz, face, &tables);
-      if (pn_any(view.use & ~dark))
-        e_face = select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz), view.use);
+      if (pn_any(view.use & ~dark)) {
+        const PnEmission em = emission_of(face, &tables); /* uniform, or the sky's polynomial */
+        e_face =
+            select(e_face, unoccluded_aperture8(view, ap, face.plane, nx, ny, nz, &em), view.use);
+      }
       e_face = select(e_face, (float8)(0.0f), dark);
       int8 facing = e_face > 0.0f;
       int8 inside[PN_VEC_MASKS]; /* per candidate, the lanes in its penumbra volume */

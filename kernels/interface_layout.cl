@@ -21,6 +21,7 @@ __kernel void interface_layout(const PnLaunchParams params, __global int* out) {
   out[n++] = (int)sizeof(PnPatchFace);
   out[n++] = (int)sizeof(PnVisibleObject);
   out[n++] = (int)sizeof(PnLuminancePolynomial);
+  out[n++] = (int)__builtin_offsetof(PnLuminancePolynomial, coefficient);
   out[n++] = (int)__builtin_offsetof(PnLuminancePolynomial, order);
   out[n++] = params.faceCount;
   out[n++] = as_int(params.epsLength);

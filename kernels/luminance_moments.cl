@@ -2,8 +2,8 @@
  * photometric luminaire's opening, docs/method.md "The area model"; Arvo 1995, "Applications of
  * irradiance tensors to the simulation of non-Lambertian phenomena"). The same closed forms as
  * host/reference/cosine_moments.cpp, per boundary arc: for a region V seen from P (unit normal n),
- * the axis w = −N (N the face's emission direction, so that w·ω = cos φ for ω from P towards the
- * face) and g = w·ω,
+ * the polynomial's axis w (−N for a luminaire's opening, N its emission direction, so that
+ * w·ω = cos φ for ω from P towards the face; +z for the overcast sky) and g = w·ω,
  *   M_k = ∫_V g^k (n·ω) dω:  (k + 2) M_k = k (w·n) τ_{k−1} + Σ (n·m) F_k,
  *   τ_k = ∫_V g^k dω:        (k + 1) τ_k = (k − 1) τ_{k−2} + Σ (w·m) F_{k−1},
  * τ_0 = Σ the signed solid angle of the triangle (w, a, b), each arc a → b of angle Θ with
@@ -29,7 +29,7 @@
 #include "prelude.cl"
 
 /* How a face emits, read once per face: order −1 for a uniform luminance (Lambert's term), else
- * the polynomial's order, its axis w = −N and its coefficients. */
+ * the polynomial's order, its axis w and its coefficients. */
 typedef struct {
   int order;
   float wx, wy, wz;
@@ -45,15 +45,10 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
   if (face.luminance < 0) return em;
   __global const PnLuminancePolynomial* poly = tables->luminances + face.luminance;
   em.order = poly->order;
+  em.wx = poly->axis.x;
+  em.wy = poly->axis.y;
+  em.wz = poly->axis.z;
   for (int k = 0; k < PN_MAX_LUMINANCE_TERMS; ++k) em.c[k] = poly->coefficient[k];
-  return em;
-}
-
-/* The uniform luminance's emission, for faces that are only ever Lambertian (a window's sky). */
-inline PnEmission uniform_emission(void) {
-  PnEmission em;
-  em.order = -1;
-  em.wx = em.wy = em.wz = 0.0f;
   return em;
 }
 

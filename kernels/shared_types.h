@@ -46,11 +46,14 @@ typedef struct {
   pn_int luminance;    /* index into the luminance polynomials, -1 for a uniform luminance */
 } PnSourceFace;
 
-/* A face whose luminance depends on the emitted direction e as a polynomial in cos φ = N·e, N its
- * emission direction (a photometric luminaire's opening, kernels/luminance_moments.cl):
- * L = 2 · halfLuminance · Σ_k coefficient[k] cos^k φ, k = 0..order. */
+/* A face whose luminance depends on the direction ω from the receiving point towards it as a
+ * polynomial in g = w·ω, w the polynomial's unit axis (kernels/luminance_moments.cl):
+ * L = 2 · halfLuminance · Σ_k coefficient[k] g^k, k = 0..order. A photometric luminaire's opening
+ * has w = −N, N its emission direction (g = cos φ of the emitted direction); the CIE overcast sky
+ * through an opening has w = +z (g = sin of the altitude). */
 #define PN_MAX_LUMINANCE_TERMS 13 /* orders 0..12 (host/photometry/luminance_fit.hpp) */
 typedef struct {
+  pn_float4 axis;                            /* xyz: the unit axis w; w 0 */
   float coefficient[PN_MAX_LUMINANCE_TERMS]; /* cd/m² */
   pn_int order;
   pn_int pad1, pad2;

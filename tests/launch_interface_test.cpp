@@ -34,6 +34,7 @@ std::vector<int> hostLayout(const PnLaunchParams& params) {
       static_cast<int>(sizeof(PnPatchFace)),
       static_cast<int>(sizeof(PnVisibleObject)),
       static_cast<int>(sizeof(PnLuminancePolynomial)),
+      static_cast<int>(offsetof(PnLuminancePolynomial, coefficient)),
       static_cast<int>(offsetof(PnLuminancePolynomial, order)),
   };
   int eps = 0;

@@ -28,6 +28,9 @@ struct IlluminanceEngine::State {
   DeviceBuffer faces, apertures, sourceVertices, luminances, occluders, planes, edges,
       occluderVertices;
   std::size_t sceneBytes = 0;  // what the buffers above take on the device
+  // Sources without a face (a sky's part of an opening that a height cut leaves empty): the
+  // kernel writes a source's row after its last face, so their rows are zeroed on the host.
+  std::vector<int> facelessSources;
   // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
   std::unique_ptr<LuminaireEngine> luminaires;
   bool hasLuminaires = false;
@@ -76,6 +79,9 @@ struct IlluminanceEngine::State {
     packed.planes = {};
     packed.edges = {};
     packed.occluderVertices = {};
+    facelessSources.clear();
+    for (int source = 0; source < static_cast<int>(scene.sources.size()); ++source)
+      if (scene.sources[source].faces.empty()) facelessSources.push_back(source);
     hasLuminaires = !scene.luminaires.empty();
     if (hasLuminaires) {
       if (!luminaires) luminaires = std::make_unique<LuminaireEngine>(d, options);
@@ -376,6 +382,14 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   if (withClasses) {
     output.classes.resize(classBytes);
     classes.download(output.classes.data(), classBytes);
+  }
+  for (int source : state_->facelessSources) {
+    const auto row = static_cast<std::ptrdiff_t>(static_cast<std::size_t>(source) * padded);
+    const auto length = static_cast<std::ptrdiff_t>(padded);
+    if (bySource) std::fill_n(output.illuminance.begin() + row, length, 0.0f);
+    if (withClasses)
+      std::fill_n(output.classes.begin() + row, length,
+                  static_cast<std::uint8_t>(ShadowClass::Unlit));
   }
   return output;
 }

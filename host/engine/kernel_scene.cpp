@@ -10,7 +10,7 @@
 #include "geometry/nishita.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
-static_assert(sizeof(PnLuminancePolynomial) == 64,
+static_assert(sizeof(PnLuminancePolynomial) == 80,
               "PnLuminancePolynomial layout must match kernels/shared_types.h");
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
 static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
@@ -68,10 +68,10 @@ std::array<double, 4> relativeRect(const std::array<double, 4>& rect, const Aper
   return {rect[0] - u, rect[1] - u, rect[2] - v, rect[3] - v};
 }
 
-// The index of `source`'s luminance polynomial in packed.luminances (appended), or -1 for a
-// uniform luminance (a polynomial of order 0 is one: halfLuminanceOf folds its coefficient in).
-// Throws std::runtime_error beyond the kernel's order.
-int packLuminance(const Source& source, KernelScene& packed) {
+// The index of the luminance polynomial of `source`'s `face` in packed.luminances (appended), or
+// -1 for a uniform luminance (a polynomial of order 0 is one: halfLuminanceOf folds its
+// coefficient in). Throws std::runtime_error beyond the kernel's order.
+int packLuminance(const Source& source, const ConvexPolygon& face, KernelScene& packed) {
   const std::vector<double>& c = source.luminanceCoefficients;
   if (c.size() <= 1) return -1;
   if (c.size() > PN_MAX_LUMINANCE_TERMS)
@@ -80,6 +80,7 @@ int packLuminance(const Source& source, KernelScene& packed) {
         source.name, c.size() - 1, PN_MAX_LUMINANCE_TERMS - 1));
   PnLuminancePolynomial poly{};
   poly.order = static_cast<int>(c.size()) - 1;
+  poly.axis = toFloat4(source.polynomialAxis(face));
   for (std::size_t k = 0; k < c.size(); ++k) poly.coefficient[k] = static_cast<float>(c[k]);
   packed.luminances.push_back(poly);
   return static_cast<int>(packed.luminances.size()) - 1;
@@ -230,7 +231,7 @@ void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows
   f.vertexCount = face.size();
   for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
   f.halfLuminance = halfLuminanceOf(source);
-  f.luminance = packLuminance(source, packed);
+  f.luminance = packLuminance(source, face, packed);
   f.source = emitting.source;
   f.aperture = -1;
   if (emitting.aperture) {

@@ -211,6 +211,7 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   std::vector<int> inside, onSolid;
   std::vector<double> e, direct;
   GridMetricsSum directSums;
+  std::vector<double> daylightTotal, daylightDirect;  // lx, points not inside solids (a sky)
   // Whether the estimator gives the direct part too, known from its first answer; the points
   // before it are inside solids (E = 0, direct part 0).
   bool answered = false, split = false;
@@ -255,6 +256,12 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
         direct[outsideAt[k]] = values.direct[k];
     }
     for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
+    if (scene.sky)
+      for (std::size_t k = 0; k < e.size(); ++k) {
+        if (inside[k] >= 0) continue;
+        daylightTotal.push_back(e[k]);
+        daylightDirect.push_back(k < direct.size() ? direct[k] : e[k]);
+      }
     for (std::size_t k = 0; k < e.size(); ++k)
       directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
     if (sink) sink(GridBatch{first, e, direct, inside, onSolid});
@@ -262,6 +269,9 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   }
   run.metrics = sums.metrics(grid.spacing);
   if (split) run.directMetrics = directSums.metrics(grid.spacing);
+  if (scene.sky)
+    run.daylight =
+        daylightMetrics(std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance);
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -84,13 +84,15 @@ struct GridRun {
   std::string name;
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
+  std::optional<DaylightMetrics> daylight;   // when the scene has a sky
   double seconds = 0.0;                      // wall time: classifying points and the estimator
 };
 
 // Evaluates the points that are not inside solids, `batchSize` at a time (the estimator sees the
 // same batches whatever the sink does), gives E = 0 to the others, and hands every point to
 // `sink` in grid order. The points are classified in parallel, a block of 4096 at a time ahead
-// of the batch that takes them. Memory: one batch of points and the inside points between them.
+// of the batch that takes them. Memory: one batch of points and the inside points between them;
+// with a sky, also two doubles per point (E and its direct part, for the median daylight factor).
 GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
                    const IlluminanceEstimator& estimate, std::size_t batchSize,
                    const GridBatchSink& sink, const ProgressCallback& progress = {});

@@ -47,4 +47,38 @@ GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int
   return sums.metrics(spacing);
 }
 
+DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const double> direct,
+                                double outdoorIlluminance) {
+  DaylightMetrics m;
+  m.outdoorIlluminance = outdoorIlluminance;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double toPercent = 100.0 / outdoorIlluminance;
+  const std::size_t n = illuminance.size();
+  if (n == 0) {
+    m.mean = m.median = m.min = m.max = m.uniformity = m.directMean = m.internalMean = nan;
+    m.shareAtLeast.assign(std::size(kDaylightFactorTargets), nan);
+    return m;
+  }
+  double sum = 0.0, directSum = 0.0;
+  for (double e : illuminance) sum += e;
+  for (double e : direct) directSum += e;
+  m.mean = toPercent * sum / static_cast<double>(n);
+  m.directMean = direct.empty() ? m.mean : toPercent * directSum / static_cast<double>(n);
+  m.internalMean = m.mean - m.directMean;
+  std::sort(illuminance.begin(), illuminance.end());
+  m.min = toPercent * illuminance.front();
+  m.max = toPercent * illuminance.back();
+  m.median = toPercent * (n % 2 == 1 ? illuminance[n / 2]
+                                     : 0.5 * (illuminance[n / 2 - 1] + illuminance[n / 2]));
+  m.uniformity = m.mean > 0.0 ? m.min / m.mean : nan;
+  for (double target : kDaylightFactorTargets) {
+    // DF >= target  <=>  E >= target · E_h / 100.
+    const double e = target * outdoorIlluminance / 100.0;
+    const auto below = std::lower_bound(illuminance.begin(), illuminance.end(), e);
+    m.shareAtLeast.push_back(static_cast<double>(illuminance.end() - below) /
+                             static_cast<double>(n));
+  }
+  return m;
+}
+
 }  // namespace penumbra

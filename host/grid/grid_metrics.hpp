@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <limits>
 #include <span>
+#include <vector>
 
 namespace penumbra {
 
@@ -32,6 +33,25 @@ class GridMetricsSum {
   double lo_ = std::numeric_limits<double>::infinity();
   double hi_ = -std::numeric_limits<double>::infinity();
 };
+
+// The daylight factor over a grid's points not inside solids (docs/method.md, "Daylight
+// factor"): DF = 100 · E / E_h %, E the illuminance at the point (total, or its direct part) and
+// E_h the sky's unobstructed horizontal illuminance outdoors.
+inline constexpr double kDaylightFactorTargets[] = {1.0, 2.0, 3.0, 5.0};  // %
+struct DaylightMetrics {
+  double outdoorIlluminance = 0.0;                        // lx: E_h
+  double mean = 0.0, median = 0.0, min = 0.0, max = 0.0;  // %; NaN when no point counts
+  double uniformity = 0.0;                                // min / mean; NaN when the mean is 0
+  // Per kDaylightFactorTargets entry: the share of the points with DF >= the target, in [0, 1].
+  std::vector<double> shareAtLeast;
+  double directMean = 0.0;    // %: the mean DF of the direct part (sky and ground through the
+                              // openings); the mean itself for a direct-only run
+  double internalMean = 0.0;  // %: mean − directMean, the internally reflected component
+};
+
+// From E (lx) of the points not inside solids, and of its direct part (empty: direct only).
+DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const double> direct,
+                                double outdoorIlluminance);
 
 // `inside[i]` is the index of the solid that strictly contains point i, -1 for none.
 GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int> inside,

@@ -14,6 +14,7 @@ GridReport streamedGridReport(const CalculationGrid& grid, const GridRun& run) {
   }
   report.metrics = run.metrics;
   report.directMetrics = run.directMetrics;
+  report.daylight = run.daylight;
   report.seconds = run.seconds;
   return report;
 }

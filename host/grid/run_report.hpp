@@ -32,6 +32,7 @@ struct GridReport {
   std::vector<double> direct;                // lx, its direct part; empty for a direct-only run
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
+  std::optional<DaylightMetrics> daylight;   // when the scene has a sky
   double seconds = 0.0;                      // time spent computing E for this grid
 };
 

@@ -5,7 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "engine/daylight_evaluation.hpp"
 #include "reference/reference_illuminance.hpp"
+#include "scene/daylight.hpp"
 
 namespace penumbra {
 
@@ -54,14 +56,21 @@ void Estimator::setScene(const Scene& scene) {
 }
 
 PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
-  if (!engine_) return referenceIlluminance(*scene_, points, referenceN_);
-  PointIlluminance e(engine_->illuminance(points));
+  if (!engine_) return daylightReference(*scene_, points);
+  PointIlluminance e(evaluateDaylight(*engine_, *scene_, points).illuminance);
   if (interreflection_) {
     e.direct = e.total;
     const std::vector<double> indirect = interreflection_->indirect(points);
     for (std::size_t i = 0; i < indirect.size(); ++i) e.total[i] += indirect[i];
   }
   return e;
+}
+
+std::vector<double> Estimator::daylightReference(const Scene& scene,
+                                                 std::span<const SamplePoint> points) const {
+  return estimateByGroup(scene, points, [&](const Scene& lit, std::span<const SamplePoint> p) {
+    return referenceIlluminance(lit, p, referenceN_);
+  });
 }
 
 IlluminanceEstimator Estimator::function() {

@@ -72,6 +72,9 @@ class Estimator {
 
  private:
   void solveInterreflection();
+  // The host reference at `points`, through the sky's groups when the scene has one.
+  std::vector<double> daylightReference(const Scene& scene,
+                                        std::span<const SamplePoint> points) const;
 
   const Scene* scene_;
   int referenceN_ = 0;

@@ -21,7 +21,8 @@ GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Sce
   if (!res_) throw std::runtime_error("cannot create " + resPath_.string());
   pts_.open(ptsPath_, std::ios::binary);
   if (!pts_) throw std::runtime_error("cannot create " + ptsPath_.string());
-  const std::string_view header = gridCsvHeader(withParts);
+  if (scene.sky) rows_.setOutdoorIlluminance(scene.sky->horizontalIlluminance);
+  const std::string_view header = gridCsvHeader(withParts, scene.sky.has_value());
   csv_.write(header.data(), static_cast<std::streamsize>(header.size()));
   thread_ = std::thread([this] { writeBatches(); });
 }

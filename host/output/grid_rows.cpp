@@ -17,10 +17,10 @@ void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance,
 
 void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminance,
                       const double* direct, std::string_view insideField) {
-  // Room for nine numbers and their separators, the field and the line break; the buffer is
+  // Room for twelve numbers and their separators, the field and the line break; the buffer is
   // then cut to what was written (fmt's resize leaves new bytes unset).
   const std::size_t start = csv_.size();
-  csv_.resize(start + 9 * (kMaxNumberText + 1) + insideField.size() + 1);
+  csv_.resize(start + 12 * (kMaxNumberText + 1) + insideField.size() + 1);
   char* out = writePoint(csv_.data() + start, position, normal, ',');
   const char* e = out;
   // The .pts line: the same six numbers, blank-separated.
@@ -40,6 +40,17 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminan
     *out++ = ',';
     out = writeNumber(out, illuminance - *direct, illuminanceDigits_);
     *out++ = ',';
+  }
+  if (outdoor_ > 0.0) {
+    const double toPercent = 100.0 / outdoor_;
+    out = writeNumber(out, toPercent * illuminance);
+    *out++ = ',';
+    if (direct != nullptr) {
+      out = writeNumber(out, toPercent * *direct);
+      *out++ = ',';
+      out = writeNumber(out, toPercent * illuminance - toPercent * *direct);
+      *out++ = ',';
+    }
   }
   if (!insideField.empty()) std::memcpy(out, insideField.data(), insideField.size());
   out += insideField.size();

@@ -5,6 +5,10 @@
 //                x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside: E_lx the total,
 //                E_indirect_lx = E_lx - E_direct_lx (each rounded to the digits E holds, so the
 //                identity holds to half an ulp of each)
+//                With a sky (scene/daylight.hpp), the daylight factor in % follows the E columns:
+//                DF_pct = 100·E_lx/E_h, and with interreflection DF_direct_pct (the sky and ground
+//                seen through the openings) and DF_internal_pct (interreflected), which add up
+//                to DF_pct; E_h the sky's unobstructed horizontal illuminance
 //   <grid>.res   E_lx (the total), one value a line
 //   <grid>.pts   x y z nx ny nz (m; unit normal), one point a line in the order of .res: the
 //                points as Radiance's rtrace reads them, so that .res and .pts go together
@@ -24,7 +28,13 @@ namespace penumbra {
 inline constexpr std::string_view kGridCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
 inline constexpr std::string_view kGridCsvHeaderWithParts =
     "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside\n";
-inline std::string_view gridCsvHeader(bool withParts) {
+inline constexpr std::string_view kGridCsvHeaderDaylight =
+    "x_m,y_m,z_m,nx,ny,nz,E_lx,DF_pct,inside\n";
+inline constexpr std::string_view kGridCsvHeaderDaylightWithParts =
+    "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,DF_pct,DF_direct_pct,DF_internal_pct,"
+    "inside\n";
+inline std::string_view gridCsvHeader(bool withParts, bool daylight = false) {
+  if (daylight) return withParts ? kGridCsvHeaderDaylightWithParts : kGridCsvHeaderDaylight;
   return withParts ? kGridCsvHeaderWithParts : kGridCsvHeader;
 }
 
@@ -34,6 +44,8 @@ class GridRows {
  public:
   // `illuminance`: the digits E is written with (number_text.hpp).
   explicit GridRows(NumberDigits illuminance) : illuminanceDigits_(illuminance) {}
+  // With E_h > 0 (lx), rows carry the daylight factor columns; 0: none.
+  void setOutdoorIlluminance(double outdoor) { outdoor_ = outdoor; }
   // Appends the point's CSV row and its .res line; `insideField` is already a CSV field.
   void add(const Vec3& position, const Vec3& normal, double illuminance,
            std::string_view insideField);
@@ -63,6 +75,7 @@ class GridRows {
 
   NumberDigits illuminanceDigits_;
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
+  double outdoor_ = 0.0;     // lx: E_h for the daylight factor columns; 0: none
   fmt::memory_buffer csv_, res_, pts_;
 };
 

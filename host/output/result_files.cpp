@@ -114,9 +114,10 @@ NumberDigits illuminanceDigits(const RunReport& report) {
 
 void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits) {
   const bool withParts = !grid.direct.empty();
-  const std::string_view header = gridCsvHeader(withParts);
+  const std::string_view header = gridCsvHeader(withParts, grid.daylight.has_value());
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
   GridRows rows(digits);
+  if (grid.daylight) rows.setOutdoorIlluminance(grid.daylight->outdoorIlluminance);
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
     if (withParts) {
       rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i], grid.direct[i],
@@ -245,6 +246,23 @@ GridMetrics reportedMetrics(const GridMetrics& metrics, GridKind kind, NumberDig
   return m;
 }
 
+// The daylight factor figures of a grid (grid_metrics.hpp), in %.
+nlohmann::json daylightJson(const DaylightMetrics& m) {
+  nlohmann::json shares = nlohmann::json::array();
+  for (std::size_t k = 0; k < m.shareAtLeast.size(); ++k)
+    shares.push_back({{"DF_target_pct", kDaylightFactorTargets[k]},
+                      {"share_at_least_pct", number(100.0 * m.shareAtLeast[k])}});
+  return {{"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
+          {"DFavg_pct", number(m.mean)},
+          {"DFmedian_pct", number(m.median)},
+          {"DFmin_pct", number(m.min)},
+          {"DFmax_pct", number(m.max)},
+          {"DF_uniformity", number(m.uniformity)},
+          {"DFavg_direct_pct", number(m.directMean)},
+          {"DFavg_internal_pct", number(m.internalMean)},
+          {"shares", shares}};
+}
+
 nlohmann::json summaryJson(const RunReport& report) {
   const NumberDigits digits = illuminanceDigits(report);
   nlohmann::json grids = nlohmann::json::array();
@@ -268,6 +286,7 @@ nlohmann::json summaryJson(const RunReport& report) {
     });
     entry.update(metricsJson(m, grid.kind, digits));
     if (grid.directMetrics) entry["direct"] = metricsJson(*grid.directMetrics, grid.kind, digits);
+    if (grid.daylight) entry["daylight_factor"] = daylightJson(*grid.daylight);
     grids.push_back(std::move(entry));
   }
   nlohmann::json summary = {

@@ -39,6 +39,64 @@ std::size_t columnsOf(const std::string& text) {
   }));
 }
 
+using Row = std::vector<std::string>;
+
+// Rows as a table: the first the header, a rule under it; names left, numbers right.
+std::string formatRows(const std::vector<Row>& rows) {
+  std::vector<std::size_t> width(rows.front().size(), 0);
+  for (const Row& row : rows) {
+    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], columnsOf(row[c]));
+  }
+  std::string table;
+  const auto appendRow = [&](const Row& row) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c > 0) table += " | ";
+      table += c == 0 ? fmt::format("{:<{}}", row[c], width[c])
+                      : fmt::format("{:>{}}", row[c], width[c]);
+    }
+    table += '\n';
+  };
+  appendRow(rows.front());
+  for (std::size_t c = 0; c < width.size(); ++c) {
+    if (c > 0) table += "-|-";
+    table += std::string(width[c], '-');
+  }
+  table += '\n';
+  for (std::size_t r = 1; r < rows.size(); ++r) appendRow(rows[r]);
+  return table;
+}
+
+std::string percent(double df) {
+  return std::isfinite(df) ? fmt::format("{:.2f}", df) : kUndefined;
+}
+
+// The daylight factor of each grid with a sky (grid_metrics.hpp); empty when none has one.
+std::string daylightTable(const RunReport& report) {
+  std::vector<Row> rows;
+  double outdoor = 0.0;
+  for (const GridReport& grid : report.grids) {
+    if (!grid.daylight) continue;
+    const DaylightMetrics& d = *grid.daylight;
+    outdoor = d.outdoorIlluminance;
+    if (rows.empty()) {
+      rows.push_back({"Grid", "DFavg [%]", "DFmedian [%]", "DFmin [%]", "DFmin/DFavg"});
+      for (double target : kDaylightFactorTargets)
+        rows.back().push_back(fmt::format("DF >= {:g} % [% of points]", target));
+      if (report.interreflection) rows.back().push_back("DFavg internal [%]");
+    }
+    rows.push_back(
+        {grid.name, percent(d.mean), percent(d.median), percent(d.min), ratio(d.uniformity)});
+    for (double share : d.shareAtLeast) rows.back().push_back(percent(100.0 * share));
+    if (report.interreflection) rows.back().push_back(percent(d.internalMean));
+  }
+  if (rows.empty()) return {};
+  return fmt::format(
+             "DF: daylight factor, 100 · E / {:g} lx (the sky's unobstructed horizontal "
+             "illuminance)\n",
+             outdoor) +
+         formatRows(rows);
+}
+
 }  // namespace
 
 std::string summaryTable(const RunReport& report) {
@@ -50,7 +108,6 @@ std::string summaryTable(const RunReport& report) {
   }
   // With interreflection, a last column gives the direct part of Eavg.
   const bool withDirect = report.interreflection.has_value();
-  using Row = std::vector<std::string>;
   std::vector<Row> rows;
   rows.push_back(
       {"Grid", "Points", "Spacing [m]", "Eavg [lx]", "Emin [lx]", "Emax [lx]", "U0", "Ud"});
@@ -65,10 +122,6 @@ std::string summaryTable(const RunReport& report) {
       rows.back().push_back(grid.directMetrics ? lux(grid.directMetrics->eAvg) : kUndefined);
     }
   }
-  std::vector<std::size_t> width(rows.front().size(), 0);
-  for (const Row& row : rows) {
-    for (std::size_t c = 0; c < row.size(); ++c) width[c] = std::max(width[c], columnsOf(row[c]));
-  }
   const std::string maintenance = maintenanceMeaning(report.luminaires);
   std::string table =
       fmt::format("E: {}{}\n",
@@ -76,22 +129,8 @@ std::string summaryTable(const RunReport& report) {
                                          : "direct illuminance only",
                   maintenance.empty() ? "" : ", " + maintenance);
   if (!luminaires.empty()) table += "Luminaires: " + luminaires + "\n";
-  const auto appendRow = [&](const Row& row) {
-    for (std::size_t c = 0; c < row.size(); ++c) {
-      if (c > 0) table += " | ";
-      // Names left, numbers right, as in any report.
-      table += c == 0 ? fmt::format("{:<{}}", row[c], width[c])
-                      : fmt::format("{:>{}}", row[c], width[c]);
-    }
-    table += '\n';
-  };
-  appendRow(rows.front());
-  for (std::size_t c = 0; c < width.size(); ++c) {
-    if (c > 0) table += "-|-";
-    table += std::string(width[c], '-');
-  }
-  table += '\n';
-  for (std::size_t r = 1; r < rows.size(); ++r) appendRow(rows[r]);
+  table += formatRows(rows);
+  table += daylightTable(report);
   for (const GridReport& grid : report.grids) {
     if (grid.metrics.pointsInsideSolids > 0) {
       table +=

@@ -10,8 +10,10 @@
 #include <fmt/format.h>
 
 #include "geometry/fnv1a_hash.hpp"
+#include "engine/daylight_evaluation.hpp"
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_transfer.hpp"
+#include "scene/daylight.hpp"
 #include "timing/seconds_since.hpp"
 
 namespace penumbra {
@@ -28,10 +30,12 @@ struct NodeLight {
 };
 
 NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh) {
-  const std::size_t sources = scene.sources.size();
+  // The sources as the engine reports them: the scene's, then its sky's and ground's (white).
+  const std::vector<Source> all = daylightScene(scene, 0.0).sources;
+  const std::size_t sources = all.size();
   std::vector<Eigen::Vector3d> channel(sources);
   for (std::size_t s = 0; s < sources; ++s) {
-    const Vec3& color = scene.sources[s].color;
+    const Vec3& color = all[s].color;
     channel[s] = color / photometric(color);
   }
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
@@ -39,7 +43,7 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
   NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
                   Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires))};
   if (n == 0) return light;
-  const IlluminanceResult result = engine.evaluate(mesh.nodes, true);
+  const IlluminanceResult result = evaluateDaylight(engine, scene, mesh.nodes, true);
   for (Eigen::Index node = 0; node < n; ++node) {
     for (std::size_t s = 0; s < sources; ++s) {
       const double e = result.bySource[static_cast<std::size_t>(node) * sources + s];
@@ -130,7 +134,10 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   }
   auto start = Clock::now();
   // The mesh, refined where the direct light is uneven; the direct E at its nodes comes with it.
-  mesh_ = buildSurfaceMesh(scene, mesh);
+  // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
+  // the sky face, cut below the scene).
+  mesh_ =
+      buildSurfaceMesh(scene.sky ? daylightScene(scene, scene.bounds().lo.z() - 1.0) : scene, mesh);
   NodeLight light = nodeLight(direct, scene, mesh_);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   if (mesh_.elements.size() > mesh.maxElements) {
@@ -180,7 +187,9 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
   auto start = Clock::now();
   // The element trees, their leaves refined where the direct light is uneven, as the dense
   // path refines its elements; no element limit (the links grow about linearly).
-  auto tree = std::make_unique<ElementTree>(buildElementTree(scene, mesh.elementSize));
+  // With a sky, the faces that see an opening are reached (as buildSurfaceMesh's are above).
+  auto tree = std::make_unique<ElementTree>(buildElementTree(
+      scene.sky ? daylightScene(scene, scene.bounds().lo.z() - 1.0) : scene, mesh.elementSize));
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   mesh_ = tree->leafMesh(mesh.quadratureOrder);
   NodeLight light = nodeLight(direct, scene, mesh_);

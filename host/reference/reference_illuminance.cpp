@@ -66,6 +66,10 @@ struct SampledFace {
   std::vector<Vec2> edgeNormals;    // otherwise: the face in (s, t), inside iff all
   std::vector<double> edgeOffsets;  //   edgeNormals[k]·(s, t) <= edgeOffsets[k]
   double weight = 0.0;              // L · dA, dA = face area / (points on the face)
+  // The luminance's relative polynomial Σ c_k (axis·ω)^k, ω the unit direction from the point
+  // towards the sample; empty: uniform.
+  std::vector<double> coefficients;
+  Vec3 axis = Vec3::Zero();
 };
 
 // A solid that may block some segment from one point to one face, with the point's signed
@@ -93,6 +97,7 @@ bool onFace(const SampledFace& face, const Vec2& st) {
 // Frames one face and fixes its lattice for about n² points on it.
 SampledFace sampledFace(const ConvexPolygon& polygon, double luminance, int n, double tolerance) {
   SampledFace face;
+  face.axis = -polygon.normal();
   const auto& v = polygon.vertices();
   face.vertices = v;
   face.normal = polygon.normal();
@@ -156,6 +161,8 @@ std::vector<SampledFace> buildFaces(const Scene& scene, int n, double tolerance)
     for (const ConvexPolygon& polygon : source.faces) {
       if (polygon.empty() || source.luminance == 0.0 || polygon.area() <= 0.0) continue;
       faces.push_back(sampledFace(polygon, source.luminance, n, tolerance));
+      faces.back().coefficients = source.luminanceCoefficients;
+      faces.back().axis = source.polynomialAxis(polygon);
     }
   }
   return faces;
@@ -219,7 +226,19 @@ bool blocks(const Candidate& c, const Vec3& p, const Vec3& w, double length2, do
   return chord > tolerance;
 }
 
-// Σ cosθ_r·cosθ_s/d² (before L·dA) over the lattice points [first, last) of one face.
+// The face's luminance towards the point, relative to its scale L: Σ c_k (axis·ŵ)^k (Horner),
+// 1 for a uniform face; w the vector from the point to the sample.
+double relativeLuminance(const SampledFace& face, const Vec3& w, double length2) {
+  if (face.coefficients.empty()) return 1.0;
+  const double g = face.axis.dot(w) / std::sqrt(length2);
+  double value = 0.0;
+  for (auto c = face.coefficients.rbegin(); c != face.coefficients.rend(); ++c)
+    value = value * g + *c;
+  return value;
+}
+
+// Σ cosθ_r·cosθ_s/d² (before L·dA) over the lattice points [first, last) of one face, each
+// times the face's relative luminance towards the point.
 double chunkSum(const SampledFace& face, long long first, long long last, const Vec3& p,
                 const Vec3& n, const std::vector<Candidate>& candidates, double tolerance) {
   const double step = 1.0 / static_cast<double>(face.latticeSize);
@@ -245,7 +264,9 @@ double chunkSum(const SampledFace& face, long long first, long long last, const 
       }
     }
     // cosθ_r · cosθ_s / d² = (n·w)(−n_s·w) / d⁴ with w unnormalised.
-    if (!hidden) sum += towardsSource * towardsPoint / (length2 * length2);
+    if (!hidden)
+      sum +=
+          relativeLuminance(face, w, length2) * towardsSource * towardsPoint / (length2 * length2);
   }
   return sum;
 }

@@ -174,7 +174,7 @@ BuiltRoom buildRoom(const RoomSpec& spec, const BuildContext& context) {
                                  wall.point(p.u1, p.z1, wall.outer), spec.wallMaterial));
     }
     for (const PlacedOpening& o : openings) {
-      built.room.openings.push_back(Opening{o.spec->name, wall.id,
+      built.room.openings.push_back(Opening{o.spec->name, wall.id, o.spec->transmittance,
                                             openingPolygon(wall, o.rect, wall.inner),
                                             openingPolygon(wall, o.rect, wall.outer)});
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <utility>
 
@@ -53,6 +54,15 @@ Vec3 CalculationGrid::position(std::size_t i) const {
 
 Vec3 CalculationGrid::normal(std::size_t i) const {
   return kind == GridKind::Points ? normals_[i] : planeNormal_;
+}
+
+double Sky::zenithLuminance() const {
+  return model == SkyModel::CieOvercast ? 9.0 * horizontalIlluminance / (7.0 * std::numbers::pi)
+                                        : horizontalIlluminance / std::numbers::pi;
+}
+
+double Sky::groundLuminance() const {
+  return groundReflectance * horizontalIlluminance / std::numbers::pi;
 }
 
 double Source::emittingArea() const {

@@ -31,18 +31,25 @@ enum class SourceShape { Polygon, Polyhedron };
 // has all its faces (every face emits outwards). Each face's vertices run counter-clockwise
 // about its emission direction, so face.normal() is where it emits to.
 //
-// A photometric luminaire's opening (the area model, scene/luminaire.hpp) is a polygon source
-// whose luminance depends on the emitted direction e: L(e) = luminance · Σ_k c_k cos^k φ,
-// cos φ = face.normal()·e, c = luminanceCoefficients (empty: uniform). Such sources exist only
-// in the scene LuminaireEngine hands the illuminance kernel, never in a loaded scene's sources.
+// A source may have a luminance that depends on the direction ω from the receiving point
+// towards it: L(ω) = luminance · Σ_k c_k (w·ω)^k, c = luminanceCoefficients (empty: uniform) and
+// w = polynomialAxis(face). A photometric luminaire's opening (the area model,
+// scene/luminaire.hpp) has w = −N, N the face's emission direction (w·ω = cos φ of the emitted
+// direction); such sources exist only in the scene LuminaireEngine hands the illuminance kernel.
+// The overcast sky through an opening (scene/daylight.hpp) has w = +z.
 struct Source {
   std::string name;
   SourceShape shape = SourceShape::Polygon;
   std::vector<ConvexPolygon> faces;
   double luminance = 0.0;                     // cd/m² (from `flux`: L = Φ / (π·A))
   std::vector<double> luminanceCoefficients;  // c_0..c_order, at most PN_MAX_LUMINANCE_TERMS
+  Vec3 luminanceAxis = Vec3::Zero();          // unit w; zero: −N of each face
   Vec3 color = Vec3::Ones();
+  std::string opening;  // the room opening an `opening:` source fills; empty for other sources
   double emittingArea() const;  // m², all faces
+  Vec3 polynomialAxis(const ConvexPolygon& face) const {
+    return luminanceAxis.isZero() ? Vec3(-face.normal()) : luminanceAxis;
+  }
 };
 
 enum class GridKind { WorkPlane, Rect, Points };
@@ -85,7 +92,8 @@ class CalculationGrid {
 
 struct Opening {
   std::string name;
-  std::string wall;  // x0 x1 y0 y1
+  std::string wall;            // x0 x1 y0 y1
+  double transmittance = 1.0;  // of its glazing, diffuse, in [0, 1]: scales the sky and ground
   ConvexPolygon
       inner;  // the hole on the wall's room-side face, counter-clockwise seen from the room
   ConvexPolygon outer;  // the hole on the wall's outside face, same orientation
@@ -95,6 +103,27 @@ struct Room {
   Vec3 size = Vec3::Zero();  // interior extent; interior corner at the origin
   double wallThickness = 0.2;
   std::vector<Opening> openings;
+};
+
+// The standard sky of a daylight scene (docs/method.md, "Daylight"): its luminance from the
+// unobstructed horizontal illuminance it gives, and the ground below the horizon, uniform of
+// luminance ρ_g·E_h/π. The sky is seen through the room's openings (scene/daylight.hpp).
+enum class SkyModel { Uniform, CieOvercast };
+
+struct Sky {
+  SkyModel model = SkyModel::CieOvercast;
+  double horizontalIlluminance = 10000.0;  // lx: E_h, outdoors on an unobstructed horizontal plane
+  double groundReflectance = 0.2;          // ρ_g in [0, 1]
+  // L at the zenith (cd/m²): E_h = 7π·L_z/9 for the CIE overcast sky, π·L for the uniform one.
+  double zenithLuminance() const;
+  double groundLuminance() const;  // cd/m²: ρ_g·E_h/π
+};
+
+// Where a daylight scene is (`site:`); read and kept for the sun's position.
+struct Site {
+  double latitudeDegrees = 0.0, longitudeDegrees = 0.0;  // °, north and east positive
+  double timezoneHours = 0.0;                            // h east of UTC
+  double northDegrees = 0.0;  // °: the direction of north (read, not yet used)
 };
 
 // A camera for `penumbra render`: a pinhole at `eye` looking at `target`, `up` tilting the image
@@ -127,6 +156,8 @@ struct Scene {
   std::vector<View> views;
   std::vector<Observer> observers;
   std::optional<Room> room;
+  std::optional<Sky> sky;  // daylight through the room's openings (scene/daylight.hpp)
+  std::optional<Site> site;
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
   // What loaded but is probably a mistake (docs/scene-format.md, "Warnings"), in file order.
   std::vector<SceneWarning> warnings;

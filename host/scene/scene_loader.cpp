@@ -105,6 +105,14 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
     for (const Solid& slab : scene.solids)
       requireThickness(slab, minimumThickness, sceneSize, file, spec.room->where);
   }
+  if (spec.sky) {
+    if (!scene.room || scene.room->openings.empty())
+      context.fail(spec.skyWhere,
+                   "the sky lights the room through its openings, but the scene has "
+                   "no 'room:' with 'openings:'");
+    scene.sky = spec.sky;
+  }
+  scene.site = spec.site;
   // Sources before solids: a curved solid orients its facets towards the strongest source.
   for (const SourceSpec& source : spec.sources) {
     scene.sources.push_back(buildSource(source, scene.room, context));

@@ -66,6 +66,7 @@ struct OpeningSpec {
   std::string name;
   std::string wall;  // x0 x1 y0 y1
   double along = 0.0, sill = 0.0, width = 0.0, height = 0.0;
+  double transmittance = 1.0;
   Where where;
 };
 
@@ -154,6 +155,9 @@ struct LuminaireSpec {
 struct SceneSpec {
   std::vector<Material> materials;
   std::optional<RoomSpec> room;
+  std::optional<Sky> sky;
+  Where skyWhere;
+  std::optional<Site> site;
   std::vector<SolidSpec> solids;
   std::vector<SourceSpec> sources;
   std::vector<LuminaireSpec> luminaires;

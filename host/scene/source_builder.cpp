@@ -78,12 +78,17 @@ Source buildSource(const SourceSpec& spec, const std::optional<Room>& room,
   } else if (const auto* rect = std::get_if<RectSpec>(&spec.shape)) {
     source.faces.push_back(rectPolygon(rect->center, rect->width, rect->height, rect->normal));
   } else {
-    source.faces.push_back(
-        openingFace(std::get<OpeningRefSpec>(spec.shape), spec.shapeWhere, room, context));
+    const auto& opening = std::get<OpeningRefSpec>(spec.shape);
+    source.faces.push_back(openingFace(opening, spec.shapeWhere, room, context));
+    source.opening = opening.opening;
   }
   // A Lambertian emitter of luminance L and area A sends Φ = π·L·A.
   source.luminance =
       spec.luminance ? *spec.luminance : *spec.flux / (std::numbers::pi * source.emittingArea());
+  // An opening's glazing passes τ of what the source behind it sends.
+  if (!source.opening.empty())
+    for (const Opening& o : room->openings)
+      if (o.name == source.opening) source.luminance *= o.transmittance;
   return source;
 }
 

@@ -1,5 +1,6 @@
 #include "scene/spec_reader.hpp"
 
+#include <cmath>
 #include <map>
 #include <string>
 #include <tuple>
@@ -100,9 +101,20 @@ class MaterialLookup {
   const std::vector<Material>& materials_;
 };
 
+// A number in [0, 1]: a transmittance or a reflectance.
+double readFraction(const Reader& reader, const Field& field, std::string_view what) {
+  const double value = reader.number(field);
+  if (value < 0.0 || value > 1.0) {
+    const std::string hint = value > 1.0 ? " (a percentage? write 0.7 for 70 %)" : "";
+    reader.fail(field.where,
+                std::string(what) + " must lie in [0, 1], got " + formatNumber(value) + hint);
+  }
+  return value;
+}
+
 OpeningSpec readOpening(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "an opening");
-  map.allowOnly({"name", "wall", "x", "z", "width", "height"}, "an opening");
+  map.allowOnly({"name", "wall", "x", "z", "width", "height", "transmittance"}, "an opening");
   OpeningSpec spec;
   spec.where = field.where;
   spec.name = reader.text(map.require("name"));
@@ -116,7 +128,46 @@ OpeningSpec readOpening(const Reader& reader, const Field& field) {
   spec.sill = reader.number(map.require("z"));
   spec.width = reader.positive(map.require("width"), "m");
   spec.height = reader.positive(map.require("height"), "m");
+  if (const std::optional<Field> t = map.find("transmittance"))
+    spec.transmittance = readFraction(reader, *t, "a transmittance");
   return spec;
+}
+
+// `sky: {model: cie-overcast | uniform, horizontal_illuminance_lx: E_h, ground_reflectance: ρ_g}`
+Sky readSky(const Reader& reader, const Field& field) {
+  const MapView map = reader.map(field, "the sky");
+  map.allowOnly({"model", "horizontal_illuminance_lx", "ground_reflectance"}, "the sky");
+  Sky sky;
+  const Field model = map.require("model");
+  const std::string name = reader.text(model);
+  if (name == "cie-overcast") {
+    sky.model = SkyModel::CieOvercast;
+  } else if (name == "uniform") {
+    sky.model = SkyModel::Uniform;
+  } else {
+    const std::string models = "cie-overcast (the CIE standard overcast sky) and uniform";
+    reader.fail(model.where, "unknown sky model '" + name + "'; the models are " + models);
+  }
+  sky.horizontalIlluminance = reader.positive(map.require("horizontal_illuminance_lx"), "lx");
+  if (const std::optional<Field> g = map.find("ground_reflectance"))
+    sky.groundReflectance = readFraction(reader, *g, "a ground reflectance");
+  return sky;
+}
+
+// `site: {latitude_deg, longitude_deg, timezone_h, north_deg}`: kept for the sun's position.
+Site readSite(const Reader& reader, const Field& field) {
+  const MapView map = reader.map(field, "the site");
+  map.allowOnly({"latitude_deg", "longitude_deg", "timezone_h", "north_deg"}, "the site");
+  Site site;
+  const Field latitude = map.require("latitude_deg");
+  site.latitudeDegrees = reader.number(latitude);
+  if (std::abs(site.latitudeDegrees) > 90.0)
+    reader.fail(latitude.where,
+                "a latitude lies in [-90, 90]°, got " + formatNumber(site.latitudeDegrees) + "°");
+  site.longitudeDegrees = reader.number(map.require("longitude_deg"));
+  if (const std::optional<Field> t = map.find("timezone_h")) site.timezoneHours = reader.number(*t);
+  if (const std::optional<Field> n = map.find("north_deg")) site.northDegrees = reader.number(*n);
+  return site;
 }
 
 RoomSpec readRoom(const Reader& reader, const Field& field, const MaterialLookup& material) {
@@ -225,7 +276,7 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   const MapView root = reader.map(reader.root(document), "the scene");
   // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
   root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids",
-                  "views", "luminaires", "observers"},
+                  "views", "luminaires", "observers", "sky", "site"},
                  "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
@@ -242,6 +293,11 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   if (const std::optional<Field> room = root.find("room")) {
     spec.room = readRoom(reader, *room, material);
   }
+  if (const std::optional<Field> sky = root.find("sky")) {
+    spec.sky = readSky(reader, *sky);
+    spec.skyWhere = sky->where;
+  }
+  if (const std::optional<Field> site = root.find("site")) spec.site = readSite(reader, *site);
   spec.solids = readList<SolidSpec>(
       reader, root, "solids", [&](const Field& item) { return readSolid(reader, item, material); });
   spec.sources = readList<SourceSpec>(reader, root, "sources",

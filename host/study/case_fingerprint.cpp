@@ -32,6 +32,18 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
     h.add(source.color);
     for (const ConvexPolygon& face : source.faces) h.add(face);
   }
+  // The sky and what it is seen through.
+  if (scene.sky) {
+    h.add(std::string_view(scene.sky->model == SkyModel::CieOvercast ? "sky cie-overcast"
+                                                                     : "sky uniform"));
+    h.add(scene.sky->horizontalIlluminance);
+    h.add(scene.sky->groundReflectance);
+    for (const Opening& opening : scene.room->openings) {
+      h.add(std::string_view("opening " + opening.name));
+      h.add(opening.transmittance);
+      h.add(opening.outer);
+    }
+  }
   // A luminaire by what it emits (its table, so that an edited file counts) and where.
   for (const Luminaire& luminaire : scene.luminaires) {
     h.add(std::string_view("luminaire " + luminaire.name));
