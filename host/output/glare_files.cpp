@@ -166,7 +166,10 @@ std::string undefinedReason(const GlareRating& rating, bool interreflection) {
 
 void writeGlareFiles(const GlareRun& run, const std::filesystem::path& directory) {
   std::map<std::string, std::string> stems;  // stem → entry
-  for (const auto& [entry, ratings] : byEntry(run.ratings)) {
+  for (const auto& group : byEntry(run.ratings)) {
+    // Named references, not a structured binding: clang 14 cannot capture those in a lambda.
+    const auto& entry = group.first;
+    const auto& ratings = group.second;
     const std::string stem = safeFileStem(entry, "observer");
     if (const auto [it, inserted] = stems.emplace(stem, entry); !inserted) {
       throw std::runtime_error(
