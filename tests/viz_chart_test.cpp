@@ -64,6 +64,48 @@ TEST(LineChart, AnotherSizeIsHonoured) {
   EXPECT_EQ(png.height(), 480);
 }
 
+// The legend is beside the chart, never over it: its box holds no data point, and it does not
+// overlap the chart's area (where every point is), for short and long series names.
+TEST(LineChart, TheLegendCoversNoPoint) {
+  TempDir dir("viz-chart");
+  LineChart chart = twoSeries();
+  for (const std::string& suffix : {std::string(), std::string(" with a long name, rated in lm")}) {
+    chart.series[1].name += suffix;
+    const LineChartFigure figure = writeLineChart(chart, dir.path() / "chart.png");
+    EXPECT_FALSE(figure.legend.overlaps(figure.chart)) << suffix;
+    EXPECT_GT(figure.legend.hi.x() - figure.legend.lo.x(), 100.0);  // px: names fit in it
+    EXPECT_GE(figure.legend.lo.x(), 0.0);
+    EXPECT_LE(figure.legend.hi.x(), chart.width);
+    ASSERT_EQ(figure.points.size(), 2u);
+    for (std::size_t s = 0; s < 2; ++s) {
+      ASSERT_EQ(figure.points[s].size(), chart.series[s].x.size());
+      for (const Eigen::Vector2d& p : figure.points[s]) {
+        EXPECT_FALSE(figure.legend.contains(p)) << p.transpose();
+        EXPECT_TRUE(figure.chart.contains(p)) << p.transpose();
+      }
+    }
+    // The last point (highest x, highest y: where VTK's legend stood) is inside the chart, and
+    // right of the first.
+    EXPECT_GT(figure.points[1].back().x(), figure.points[1].front().x());
+  }
+}
+
+// Identical series are told apart: the legend says which one each repeats, and both are drawn
+// (the earlier one wider, under the later one's line and markers).
+TEST(LineChart, IdenticalSeriesAreNamedAndBothVisible) {
+  TempDir dir("viz-chart");
+  LineChart chart = twoSeries();
+  chart.series.push_back(chart.series[0]);
+  chart.series[2].name = "panel_flux_lm = 5000";
+  EXPECT_EQ(firstIdenticalSeries(chart), (std::vector<std::size_t>{0, 1, 0}));
+  EXPECT_EQ(chartLegendLabels(chart)[2], "panel_flux_lm = 5000 (= panel_flux_lm = 3000)");
+  EXPECT_EQ(chartLegendLabels(chart)[0], "panel_flux_lm = 3000");
+  writeLineChart(chart, dir.path() / "same.png");
+  const Png png(dir.path() / "same.png");
+  EXPECT_GT(pixelsOf(png, chartSeriesColour(0)), 300);  // the first, round the third
+  EXPECT_GT(pixelsOf(png, chartSeriesColour(2)), 300);
+}
+
 TEST(LineChart, MismatchedSeriesAreRefused) {
   TempDir dir("viz-chart");
   LineChart chart = twoSeries();

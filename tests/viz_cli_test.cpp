@@ -54,10 +54,10 @@ TEST(PlotCli, GridWithPlotWritesEveryPicture) {
   std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
   const Outcome run = penumbra(dir.path(), "grid room.yaml -o out --plot --width 800 -q");
   ASSERT_EQ(run.status, 0) << run.err;
-  const std::set<std::string> expected{"work-plane.csv", "work-plane.res", "work-plane.pts",
-                                       "sensors.csv",    "sensors.res",    "sensors.pts",
-                                       "summary.json",   "work-plane.png", "work-plane.vti",
-                                       "sensors.vtp",    "surfaces.vtp",   "surfaces.png"};
+  const std::set<std::string> expected{
+      "work-plane.csv", "work-plane.res", "work-plane.pts", "sensors.csv",    "sensors.res",
+      "sensors.pts",    "summary.json",   "work-plane.png", "work-plane.vti", "sensors.vtp",
+      "surfaces.vtp",   "surfaces.png",   "plots.json"};
   EXPECT_EQ(filesIn(dir.path() / "out"), expected);
   const penumbra::testing::Png png(dir.path() / "out" / "work-plane.png");
   EXPECT_EQ(png.width(), 800);
@@ -188,6 +188,68 @@ TEST(PlotCli, ChartsThatAbortCostNoResultsAndARerunDrawsThem) {
   ASSERT_EQ(penumbra(dir.path(), "sweep study.yaml -o out -q").status, 0);
   EXPECT_TRUE(fs::exists(lost));
   EXPECT_EQ(fs::last_write_time(kept), keptTime);
+}
+
+// `grid --plot` with a display that goes away (VTK aborts the process drawing): the results and
+// the ParaView files are written, the pictures named with the signal, the status 1; `penumbra
+// plot` then draws them, and afterwards only what is missing.
+TEST(PlotCli, PicturesThatAbortCostNoResultsAndARerunDrawsOnlyThem) {
+  TempDir dir("viz-cli");
+  std::ofstream(dir.path() / "room.yaml") << sceneWithGrids();
+  const fs::path out = dir.path() / "out";
+  const Outcome broken =
+      penumbra(dir.path(), "grid room.yaml -o out --plot --width 600 --surface-spacing 0.5 -q",
+               "env DISPLAY=:9999");
+  EXPECT_EQ(broken.status, 1) << broken.err;
+  EXPECT_NE(broken.err.find("2 pictures not drawn (work-plane.png, surfaces.png)"),
+            std::string::npos)
+      << broken.err;
+  EXPECT_NE(broken.err.find("killed by signal 6"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("the results and the ParaView files are written"), std::string::npos)
+      << broken.err;
+  for (const char* file : {"summary.json", "work-plane.csv", "work-plane.vti", "surfaces.vtp"}) {
+    EXPECT_TRUE(fs::exists(out / file)) << file;
+  }
+  EXPECT_FALSE(fs::exists(out / "work-plane.png"));
+
+  const Outcome rerun = penumbra(dir.path(), "plot out --width 600 --surface-spacing 0.5 -q");
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_EQ(penumbra::testing::Png(out / "work-plane.png").width(), 600);
+  EXPECT_EQ(penumbra::testing::Png(out / "surfaces.png").width(), 600);
+
+  // One picture lost: `plot` draws it and leaves the other; a display gone again costs it alone.
+  const auto keptTime = fs::last_write_time(out / "work-plane.png");
+  fs::remove(out / "surfaces.png");
+  const Outcome lost =
+      penumbra(dir.path(), "plot out --width 600 --surface-spacing 0.5 -q", "env DISPLAY=:9999");
+  EXPECT_EQ(lost.status, 1);
+  EXPECT_NE(lost.err.find("1 picture not drawn (surfaces.png)"), std::string::npos) << lost.err;
+  ASSERT_EQ(penumbra(dir.path(), "plot out --width 600 --surface-spacing 0.5 -q").status, 0);
+  EXPECT_TRUE(fs::exists(out / "surfaces.png"));
+  EXPECT_EQ(fs::last_write_time(out / "work-plane.png"), keptTime);
+}
+
+// The same for a sweep's per-case plots: every case is finished with its results, the pictures
+// not drawn are named, and the rerun draws them without computing a case again.
+TEST(PlotCli, CasePicturesThatAbortCostNoResults) {
+  TempDir dir("viz-cli");
+  writeCabinetStudy(dir.path(), "[1, 3]", "plots: true\ncharts: false\n");
+  const Outcome broken = penumbra(dir.path(), "sweep study.yaml -o out -q", "env DISPLAY=:9999");
+  EXPECT_EQ(broken.status, 1) << broken.err;
+  EXPECT_NE(broken.err.find("4 case pictures not drawn"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("cases/case-002/surfaces.png"), std::string::npos) << broken.err;
+  EXPECT_NE(broken.err.find("killed by signal 6"), std::string::npos) << broken.err;
+  const fs::path lastCase = dir.path() / "out" / "cases" / "case-002";
+  EXPECT_EQ(penumbra::testing::lines(readText(dir.path() / "out" / "results.csv")).size(), 3u);
+  EXPECT_TRUE(fs::exists(lastCase / "work-plane.vti"));
+  EXPECT_FALSE(fs::exists(lastCase / "work-plane.png"));
+  const auto computed = fs::last_write_time(lastCase / "work-plane.csv");
+
+  const Outcome rerun = penumbra(dir.path(), "sweep study.yaml -o out -q");
+  ASSERT_EQ(rerun.status, 0) << rerun.err;
+  EXPECT_TRUE(fs::exists(lastCase / "work-plane.png"));
+  EXPECT_TRUE(fs::exists(lastCase / "surfaces.png"));
+  EXPECT_EQ(fs::last_write_time(lastCase / "work-plane.csv"), computed);  // not computed again
 }
 
 TEST(PlotCli, WithoutADisplayItSaysHowAndWritesNothing) {

@@ -238,9 +238,12 @@ TEST(SurfacesFile, IlluminanceEqualsTheEngineAndTheClosedForm) {
   const Scene scene = parseScene(kPanelRoom, dir.path() / "room.yaml");
   const PlotOptions options = panelRoomPlotOptions();
   IlluminanceEngine plotEngine(*device, scene);
-  const SurfacesPlot plot = plotSurfaces(scene, directLight(plotEngine), "direct light only",
-                                         options, "room.yaml", dir.path());
-  EXPECT_TRUE(fs::exists(dir.path() / "surfaces.png"));
+  const SurfacesPlot plot = writeSurfacesFile(scene, directLight(plotEngine), options, dir.path());
+  // The picture is drawn from the file.
+  EXPECT_EQ(drawSurfacesPicture(scene, dir.path() / "surfaces.vtp", "direct light only", options,
+                                "room.yaml", dir.path() / "surfaces.png"),
+            options.width * 5 / 8);
+  EXPECT_EQ(penumbra::testing::Png(dir.path() / "surfaces.png").width(), options.width);
 
   const SurfaceSamples read = readSurfaceSamples(dir.path() / "surfaces.vtp", scene);
   ASSERT_EQ(read.total, static_cast<vtkIdType>(plot.points));
@@ -287,8 +290,7 @@ TEST(SurfacesFile, WithInterreflectionTheSurfacesCarryTheTotal) {
   const PointLight light = [&](std::span<const SamplePoint> points) {
     return plotEstimator.illuminance(points).total;
   };
-  const SurfacesPlot plot = plotSurfaces(scene, light, "total (direct + interreflected)", options,
-                                         "room.yaml", dir.path());
+  const SurfacesPlot plot = writeSurfacesFile(scene, light, options, dir.path());
   const SurfaceSamples read = readSurfaceSamples(dir.path() / "surfaces.vtp", scene);
   ASSERT_EQ(read.total, static_cast<vtkIdType>(plot.points));
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
+#include <string>
 
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
@@ -15,6 +17,7 @@
 #include "viz/heat_map.hpp"
 #include "viz/isolux_lines.hpp"
 #include "viz/planar_field.hpp"
+#include "viz/plane_sections.hpp"
 #include "viz_test_support.hpp"
 
 namespace penumbra::viz {
@@ -183,6 +186,87 @@ TEST_F(HillMap, PointsInsideSolidsAreLeftOutOfTheMarkersAndTheLines) {
   EXPECT_EQ(drawn.figure.isolux->GetNumberOfPoints(), 0);
   const Vec3& dark = grid.points[brightest].position;
   EXPECT_FALSE(drawn.figure.eMinAt.x() == dark.x() && drawn.figure.eMinAt.y() == dark.y());
+}
+
+// The room with a desk top over the hill grid (above its plane at 0.8 m), a shelf above the plane
+// but beside the grid, and a stool under the plane; the cabinet stands through the plane.
+std::string furnishedRoom() {
+  std::string scene = penumbra::testing::kRoomScene;
+  scene.insert(
+      scene.find("sources:"),
+      "  - {name: desk, box: {min: [1.0, 1.2, 0.9], max: [2.2, 2.0, 0.95]}, material: grey}\n"
+      "  - {name: shelf, box: {min: [0.1, 0.1, 1.8], max: [0.4, 0.5, 1.85]}, material: grey}\n"
+      "  - {name: stool, box: {min: [3.0, 3.0, 0.0], max: [3.5, 3.4, 0.45]}, material: grey}\n");
+  return scene;
+}
+
+// The corners of an axis-aligned box with two of its coordinates, as a set (order-free).
+using Corners = std::set<std::pair<double, double>>;
+Corners cornersOf(const std::vector<Eigen::Vector2d>& polygon) {
+  Corners corners;
+  for (const Eigen::Vector2d& p : polygon) corners.insert({p.x(), p.y()});
+  return corners;
+}
+
+// Footprints are the boxes' corners (from the scene text) projected onto the plane: on a work
+// plane the x-y rectangle, on a wall-parallel plane the x-z rectangle; only solids wholly in front
+// of the plane have one, and the room's slabs none.
+TEST(Footprints, AreTheBoxesProjectedOntoThePlane) {
+  const Scene scene = parseScene(furnishedRoom(), "room.yaml");
+  const std::vector<SolidSection> above =
+      solidFootprints(scene, Plane::through(Vec3(0, 0, 0.8), Vec3::UnitZ()));
+  std::map<std::string, std::set<std::array<double, 3>>> byName;
+  for (const SolidSection& s : above) {
+    for (const Vec3& v : s.polygon) byName[s.name].insert({v.x(), v.y(), v.z()});
+    EXPECT_EQ(s.polygon.size(), 4u) << s.name;
+  }
+  EXPECT_EQ(byName.size(), 2u);  // desk and shelf; not the stool (below), not the cabinet (cut)
+  const std::set<std::array<double, 3>> desk{
+      {1.0, 1.2, 0.8}, {2.2, 1.2, 0.8}, {2.2, 2.0, 0.8}, {1.0, 2.0, 0.8}};
+  EXPECT_EQ(byName["desk"], desk);
+  const std::set<std::array<double, 3>> shelf{
+      {0.1, 0.1, 0.8}, {0.4, 0.1, 0.8}, {0.4, 0.5, 0.8}, {0.1, 0.5, 0.8}};
+  EXPECT_EQ(byName["shelf"], shelf);
+
+  // A plane facing +y at y = 0.6 (a rect grid before the window wall): the desk is in front of it.
+  const Plane wall = Plane::through(Vec3(0, 0.6, 0), Vec3::UnitY());
+  const auto deskAt = std::find_if(scene.solids.begin(), scene.solids.end(),
+                                   [](const Solid& s) { return s.name == "desk"; });
+  ASSERT_NE(deskAt, scene.solids.end());
+  const Solid& deskSolid = *deskAt;
+  ASSERT_EQ(deskSolid.name, "desk");
+  std::set<std::array<double, 3>> seen;
+  for (const Vec3& v : footprintOf(deskSolid.shape, wall, 1e-9)) {
+    seen.insert({v.x(), std::round(v.y() * 1e12) / 1e12, v.z()});
+  }
+  const std::set<std::array<double, 3>> facing{
+      {1.0, 0.6, 0.9}, {2.2, 0.6, 0.9}, {2.2, 0.6, 0.95}, {1.0, 0.6, 0.95}};
+  EXPECT_EQ(seen, facing);
+  // Counter-clockwise about the plane's normal, as every polygon here.
+  const std::vector<Vec3> loop = footprintOf(deskSolid.shape, wall, 1e-9);
+  EXPECT_GT((loop[1] - loop[0]).cross(loop[2] - loop[1]).dot(wall.normal), 0.0);
+}
+
+// The heat map draws the furniture the plane cuts and the footprints over the calculation area,
+// where the scene puts them (plot coordinates = world x, y for a horizontal grid).
+TEST(Footprints, TheHeatMapDrawsThoseOverTheGrid) {
+  TempDir dir("viz-heat-map");
+  const GridReport grid = hillGrid();
+  HeatMapStyle style;
+  style.scale = colourScale({}, grid.metrics.eMin, grid.metrics.eMax);
+  style.width = 1000;
+  const HeatMapFigure figure =
+      drawHeatMap(planarField(grid), grid.metrics, parseScene(furnishedRoom(), "room.yaml"), style,
+                  dir.path() / "furnished.png");
+  ASSERT_EQ(figure.footprints.size(), 1u);  // the shelf is beside the grid, not over it
+  EXPECT_EQ(figure.footprints[0].first, "desk");
+  EXPECT_EQ(cornersOf(figure.footprints[0].second),
+            (Corners{{1.0, 1.2}, {2.2, 1.2}, {2.2, 2.0}, {1.0, 2.0}}));
+  std::map<std::string, Corners> sections;
+  for (const auto& [name, polygon] : figure.sections) sections[name] = cornersOf(polygon);
+  EXPECT_EQ(sections.size(), 1u);
+  EXPECT_EQ(sections["cabinet"], (Corners{{5.5, 2.8}, {6.0, 2.8}, {6.0, 3.9}, {5.5, 3.9}}));
+  EXPECT_EQ(Png(dir.path() / "furnished.png").width(), 1000);
 }
 
 TEST(IsoluxLevels, FollowTheOneTwoFiveSeriesOrARoundStep) {

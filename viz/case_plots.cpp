@@ -5,6 +5,7 @@
 
 #include "output/result_reader.hpp"
 #include "viz/plot_files.hpp"
+#include "viz/plot_pictures.hpp"
 #include "viz/render_png.hpp"
 
 namespace penumbra::viz {
@@ -33,10 +34,18 @@ std::vector<std::string> CasePlots::write(const Scene& scene, const RunReport& /
     return estimator_->illuminance(points).total;
   };
   std::vector<std::string> images;
-  for (const PlotFile& file : drawPlots(written, scene, light, options_, directory)) {
+  for (const PlotFile& file : writePlotData(written, scene, light, options_, directory)) {
     if (file.image) images.push_back(file.name);
   }
+  for (PictureFile& png : plotPictures(written, scene, options_, directory)) {
+    images.push_back(std::move(png.fileName));
+  }
   return images;
+}
+
+PicturesWritten CasePlots::drawPictures(const Scene& scene,
+                                        const std::filesystem::path& directory) {
+  return drawPlotPictures(readResults(directory), scene, options_, directory);
 }
 
 }  // namespace penumbra::viz

@@ -23,9 +23,12 @@ class CasePlots : public CaseOutputWriter {
   std::string name() const override { return "plots"; }
   // Without a display VTK aborts: then the sweep runs without plots and says how to get them.
   std::string unavailable() const override;
-  // Returns the PNGs (<grid>.png per planar grid, surfaces.png); the .vti/.vtp are written too.
+  // Writes the .vti/.vtp (and .svg) files; returns the images: <grid>.svg where asked for, and
+  // the PNGs drawPictures draws (<grid>.png per planar grid, surfaces.png).
   std::vector<std::string> write(const Scene& scene, const RunReport& report,
                                  const std::filesystem::path& directory) override;
+  // The PNGs, in a child process (drawPlotPictures).
+  PicturesWritten drawPictures(const Scene& scene, const std::filesystem::path& directory) override;
 
  private:
   PlotOptions options_;

@@ -5,6 +5,7 @@
 #include <vtkRenderer.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "viz/colour_legend.hpp"
@@ -28,6 +29,8 @@ using V2 = Eigen::Vector2d;
 
 constexpr Rgb kWall{0.55, 0.55, 0.55};     // room slabs in section, as on an architect's plan
 constexpr Rgb kOpening{0.78, 0.88, 0.97};  // glass blue
+constexpr double kFootprintDash = 9.0;     // px at font scale 1
+constexpr double kKeyLine = 24.0;          // px between the key's lines at font scale 1
 
 // The grid points of the largest and smallest E among those not inside solids.
 struct Extremes {
@@ -91,14 +94,22 @@ std::vector<V2> toPixels(const PlotLayout& layout, const Polygon2& polygon) {
   return pixels;
 }
 
-void addSections(vtkRenderer* renderer, const PlotLayout& layout, const PlanarField& field,
-                 const std::vector<SolidSection>& sections) {
+// A solid's name in the middle of its outline (`pixels`).
+void addSolidName(vtkRenderer* renderer, const PlotLayout& layout, const std::string& text,
+                  const std::vector<V2>& pixels) {
   TextStyle name;
   name.size = layout.scaled(14);
   name.horizontal = Align::Centre;
   name.vertical = Align::Centre;
   name.colour = kSubtle;
   name.box = true;
+  V2 centre = V2::Zero();
+  for (const V2& p : pixels) centre += p;
+  renderer->AddActor2D(textAt(text, centre / static_cast<double>(pixels.size()), name));
+}
+
+void addSections(vtkRenderer* renderer, const PlotLayout& layout, const PlanarField& field,
+                 const std::vector<SolidSection>& sections, HeatMapFigure& figure) {
   for (const SolidSection& section : sections) {
     const std::vector<V2> pixels = toPixels(layout, project(field, section.polygon));
     if (pixels.empty()) continue;
@@ -107,19 +118,45 @@ void addSections(vtkRenderer* renderer, const PlotLayout& layout, const PlanarFi
       continue;
     }
     // Furniture through the plane: hatched grey over the colours, outlined, named.
+    figure.sections.emplace_back(section.name, project(field, section.polygon));
     renderer->AddActor2D(fillAt(pixels, kWhite, 0.55));
     renderer->AddActor2D(lineAt(pixels, true, kInk, 1.5 * layout.fontScale));
-    V2 centre = V2::Zero();
-    for (const V2& p : pixels) centre += p;
-    centre /= static_cast<double>(pixels.size());
-    renderer->AddActor2D(textAt(section.name, centre, name));
+    addSolidName(renderer, layout, section.name, pixels);
   }
 }
 
-// Openings in their walls and luminaires as they project onto the picture, with a key under the
-// legend saying what the two outlines are.
-void addPlanSymbols(vtkRenderer* renderer, const PlotLayout& layout, const PlotPlane& plot,
-                    const Scene& scene, const V2& keyAt) {
+// Footprints of furniture wholly above the plane that overlap the calculation area [lo, hi]:
+// dashed outlines, so that the colours under them stay readable, named like the sections.
+void addFootprints(vtkRenderer* renderer, const PlotLayout& layout, const PlanarField& field,
+                   const std::vector<SolidSection>& footprints, const V2& lo, const V2& hi,
+                   HeatMapFigure& figure) {
+  for (const SolidSection& footprint : footprints) {
+    const Polygon2 plotted = project(field, footprint.polygon);
+    // Over the calculation area: sharing more than an edge with it.
+    if (std::abs(signedArea(clipToBox(plotted, lo, hi))) <= 1e-9 * (hi - lo).prod()) continue;
+    const std::vector<V2> pixels = toPixels(layout, plotted);
+    if (pixels.empty()) continue;
+    figure.footprints.emplace_back(footprint.name, plotted);
+    renderer->AddActor2D(dashedLineAt(pixels, true, kWhite, 4.5 * layout.fontScale,
+                                      kFootprintDash * layout.fontScale));
+    renderer->AddActor2D(
+        dashedLineAt(pixels, true, kInk, 2 * layout.fontScale, kFootprintDash * layout.fontScale));
+    addSolidName(renderer, layout, footprint.name, pixels);
+  }
+}
+
+// A line of the key under the legend: a square drawn as the thing it names.
+struct KeyEntry {
+  std::string text;
+  Rgb fill, edge;
+  bool filled = true, dashed = false;
+};
+
+// Openings in their walls and luminaires as they project onto the picture. Returns the key's
+// entries for them and for the furniture drawn (figure.sections, figure.footprints).
+std::vector<KeyEntry> addPlanSymbols(vtkRenderer* renderer, const PlotLayout& layout,
+                                     const PlotPlane& plot, const Scene& scene,
+                                     const HeatMapFigure& figure) {
   const double f = layout.fontScale;
   bool anyOpening = false, anyLuminaire = false;
   for (const PlotPolygon& opening : projectedOpenings(scene, plot)) {
@@ -135,21 +172,35 @@ void addPlanSymbols(vtkRenderer* renderer, const PlotLayout& layout, const PlotP
     renderer->AddActor2D(lineAt(pixels, true, kSourceEdge, 2 * f));
     anyLuminaire = true;
   }
+  std::vector<KeyEntry> entries;
+  if (anyLuminaire) entries.push_back({"luminaire (projected)", kWhite, kSourceEdge});
+  if (anyOpening) entries.push_back({"opening", kOpening, kInk});
+  if (!figure.sections.empty()) {
+    entries.push_back({"cut by the plane", {0.8, 0.8, 0.8}, kInk});
+  }
+  if (!figure.footprints.empty()) {
+    entries.push_back({"above the plane", kWhite, kInk, false, true});
+  }
+  return entries;
+}
+
+// The key, its first line's square at `at` (lower-left corner, px), each next line 24 px lower.
+void addKey(vtkRenderer* renderer, const PlotLayout& layout, const std::vector<KeyEntry>& entries,
+            V2 at) {
+  const double f = layout.fontScale;
   TextStyle key;
   key.size = layout.scaled(15);
   key.vertical = Align::Centre;
   const double box = 14 * f;
-  V2 at = keyAt;
-  const auto entry = [&](const std::string& text, const Rgb& fill, const Rgb& edge) {
+  for (const KeyEntry& e : entries) {
     const std::vector<V2> square{
         at, {at.x() + box, at.y()}, {at.x() + box, at.y() + box}, {at.x(), at.y() + box}};
-    renderer->AddActor2D(fillAt(square, fill));
-    renderer->AddActor2D(lineAt(square, true, edge, 2 * f));
-    renderer->AddActor2D(textAt(text, {at.x() + box + 8 * f, at.y() + box / 2}, key));
-    at.y() -= 24 * f;
-  };
-  if (anyLuminaire) entry("luminaire (projected)", kWhite, kSourceEdge);
-  if (anyOpening) entry("opening", kOpening, kInk);
+    if (e.filled) renderer->AddActor2D(fillAt(square, e.fill));
+    renderer->AddActor2D(e.dashed ? dashedLineAt(square, true, e.edge, 2 * f, 0.3 * box)
+                                  : lineAt(square, true, e.edge, 2 * f));
+    renderer->AddActor2D(textAt(e.text, {at.x() + box + 8 * f, at.y() + box / 2}, key));
+    at.y() -= kKeyLine * f;
+  }
 }
 
 void addMarker(vtkRenderer* renderer, const PlotLayout& layout, const V2& at, bool isMax,
@@ -212,6 +263,7 @@ HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, 
 
   const Plane plane = Plane::through(field.first, field.normal);
   const std::vector<SolidSection> sections = solidSections(scene, plane);
+  const std::vector<SolidSection> footprints = solidFootprints(scene, plane);
   const std::vector<V2> outline = project(field, roomOutline(scene, plane));
   std::vector<Polygon2> shapes{outline};
   for (const SolidSection& s : sections) shapes.push_back(project(field, s.polygon));
@@ -227,9 +279,16 @@ HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, 
   lines->SetPosition(0.0, 0.0, 0.01);  // towards the camera: over the colours
   renderer->AddActor(lines);
 
-  addSections(renderer, layout, field, sections);
-  addPlanSymbols(renderer, layout, field.plot, scene,
-                 {layout.width - 230 * f, layout.bottom - 36 * f});
+  addSections(renderer, layout, field, sections, figure);
+  double area[6];
+  surface->GetBounds(area);
+  addFootprints(renderer, layout, field, footprints, {area[0], area[2]}, {area[1], area[3]},
+                figure);
+  const std::vector<KeyEntry> key = addPlanSymbols(renderer, layout, field.plot, scene, figure);
+  // Under the colour bar; a long key lifts the bar rather than leave the image at its bottom.
+  const double keyTop = std::max(layout.bottom - 36 * f,
+                                 14 * f + kKeyLine * f * (static_cast<double>(key.size()) - 1.0));
+  addKey(renderer, layout, key, {layout.width - 230 * f, keyTop});
   if (const std::vector<V2> pixels = toPixels(layout, outline); !pixels.empty()) {
     renderer->AddActor2D(lineAt(pixels, true, kInk, 2.5 * f));
   }
@@ -262,9 +321,9 @@ HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, 
   LegendPlacement& legend = figure.legend;
   legend.fontScale = f;
   legend.x = layout.width - 230 * f;
-  legend.y = layout.bottom;
+  legend.y = std::max(layout.bottom, keyTop + 36 * f);
   legend.width = 30 * f;
-  legend.height = std::max(layout.plotHeight() - 80 * f, 200 * f);
+  legend.height = std::max(layout.plotHeight() - 80 * f - (legend.y - layout.bottom), 200 * f);
   addColourLegend(renderer, style.scale, legend, "Illuminance E [lx]", style.isolux);
 
   placeCamera(renderer, layout);

@@ -1,9 +1,11 @@
 #pragma once
 // The heat map of a planar grid: illuminance in false colour over the calculation area, isolux
-// lines with their values, the room outline and the solids the plane cuts, Emin and Emax
-// marked, the metrics in the title and a legend with units.
+// lines with their values, the room outline, the solids the plane cuts (filled, outlined) and
+// the footprints of those wholly above it over the calculation area (dashed: desk tops, shelves
+// over a work plane), Emin and Emax marked, the metrics in the title and a legend with units.
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <vtkPolyData.h>
@@ -32,6 +34,9 @@ struct HeatMapFigure {
   Eigen::Vector2d eMaxAt{0, 0}, eMinAt{0, 0};  // plot coordinates (m) of the marked points
   vtkSmartPointer<vtkPolyData> isolux;         // the lines, in plot coordinates
   LegendPlacement legend;                      // where the colour bar is, px
+  // Plot coordinates (m) of the furniture drawn: sections where the plane cuts it, footprints of
+  // what is wholly above the plane over the calculation area; named as the scene names them.
+  std::vector<std::pair<std::string, std::vector<Eigen::Vector2d>>> sections, footprints;
 };
 
 // Renders the heat map to `png` (needs a display, see render_png.hpp). `scene` gives the

@@ -7,6 +7,7 @@
 #include <vtkProperty2D.h>
 #include <vtkTextProperty.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -77,6 +78,54 @@ vtkSmartPointer<vtkActor2D> lineAt(const std::vector<Eigen::Vector2d>& pixels, b
   for (vtkIdType i = 0; i < n; ++i) cells->InsertCellPoint(i);
   if (closed) cells->InsertCellPoint(0);
   auto actor = actorFor(pixels, cells, true);
+  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
+  actor->GetProperty()->SetLineWidth(static_cast<float>(width));
+  return actor;
+}
+
+std::vector<std::vector<Eigen::Vector2d>> dashes(const std::vector<Eigen::Vector2d>& pixels,
+                                                 bool closed, double dash) {
+  std::vector<Eigen::Vector2d> path = pixels;
+  if (closed && !pixels.empty()) path.push_back(pixels.front());
+  std::vector<std::vector<Eigen::Vector2d>> pieces;
+  if (path.size() < 2 || !(dash > 0.0)) return pieces;
+  pieces.push_back({path.front()});
+  bool drawing = true;
+  double left = dash;  // of the current dash or gap
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    Eigen::Vector2d at = path[i];
+    double segment = (path[i + 1] - at).norm();
+    const Eigen::Vector2d step =
+        segment > 0.0 ? Eigen::Vector2d((path[i + 1] - at) / segment) : Eigen::Vector2d::Zero();
+    while (segment > 0.0) {
+      const double run = std::min(left, segment);
+      at += run * step;
+      segment -= run;
+      left -= run;
+      if (drawing) pieces.back().push_back(at);
+      if (left <= 0.0) {
+        drawing = !drawing;
+        left = dash;
+        if (drawing) pieces.push_back({at});
+      }
+    }
+  }
+  std::erase_if(pieces, [](const std::vector<Eigen::Vector2d>& p) { return p.size() < 2; });
+  return pieces;
+}
+
+vtkSmartPointer<vtkActor2D> dashedLineAt(const std::vector<Eigen::Vector2d>& pixels, bool closed,
+                                         const Rgb& colour, double width, double dash) {
+  std::vector<Eigen::Vector2d> points;
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  for (const std::vector<Eigen::Vector2d>& piece : dashes(pixels, closed, dash)) {
+    cells->InsertNextCell(static_cast<vtkIdType>(piece.size()));
+    for (const Eigen::Vector2d& p : piece) {
+      cells->InsertCellPoint(static_cast<vtkIdType>(points.size()));
+      points.push_back(p);
+    }
+  }
+  auto actor = actorFor(points, cells, true);
   actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
   actor->GetProperty()->SetLineWidth(static_cast<float>(width));
   return actor;

@@ -32,6 +32,15 @@ vtkSmartPointer<vtkTextActor> textAt(const std::string& text, const Eigen::Vecto
 vtkSmartPointer<vtkActor2D> lineAt(const std::vector<Eigen::Vector2d>& pixels, bool closed,
                                    const Rgb& colour, double width);
 
+// The dashes of a polyline through `pixels`: `dash` px drawn, `dash` px left out, in turn along
+// its length (the dashes of pixel coordinates, so that they are the same at any scale).
+std::vector<std::vector<Eigen::Vector2d>> dashes(const std::vector<Eigen::Vector2d>& pixels,
+                                                 bool closed, double dash);
+
+// The polyline through `pixels` drawn dashed (dashes()).
+vtkSmartPointer<vtkActor2D> dashedLineAt(const std::vector<Eigen::Vector2d>& pixels, bool closed,
+                                         const Rgb& colour, double width, double dash);
+
 // A convex polygon filled with one colour.
 vtkSmartPointer<vtkActor2D> fillAt(const std::vector<Eigen::Vector2d>& pixels, const Rgb& colour,
                                    double opacity = 1.0);

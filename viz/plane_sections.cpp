@@ -4,10 +4,19 @@
 #include <cmath>
 
 #include "geometry/tolerance.hpp"
+#include "viz/polygon2d.hpp"
 
 namespace penumbra::viz {
 
 namespace {
+
+// Two unit vectors in the plane, e1 × e2 = normal.
+std::pair<Vec3, Vec3> planeAxes(const Plane& plane) {
+  const Vec3 e1 = (std::abs(plane.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY())
+                      .cross(plane.normal)
+                      .normalized();
+  return {e1, plane.normal.cross(e1)};
+}
 
 // Orders points of a convex planar polygon around their centroid (counter-clockwise about the
 // plane's normal) and drops repeats (a vertex on the plane is met by several edges).
@@ -16,10 +25,9 @@ std::vector<Vec3> convexLoop(std::vector<Vec3> points, const Plane& plane, doubl
   Vec3 centre = Vec3::Zero();
   for (const Vec3& p : points) centre += p;
   centre /= static_cast<double>(points.size());
-  const Vec3 e1 = (std::abs(plane.normal.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY())
-                      .cross(plane.normal)
-                      .normalized();
-  const Vec3 e2 = plane.normal.cross(e1);
+  // Not a structured binding: clang 14 cannot capture one in the lambda below.
+  const std::pair<Vec3, Vec3> axes = planeAxes(plane);
+  const Vec3 e1 = axes.first, e2 = axes.second;
   const auto angle = [&](const Vec3& p) {
     return std::atan2((p - centre).dot(e2), (p - centre).dot(e1));
   };
@@ -58,6 +66,34 @@ std::vector<Vec3> sectionOf(const ConvexPolyhedron& solid, const Plane& plane, d
     }
   }
   return convexLoop(std::move(points), plane, tolerance);
+}
+
+std::vector<Vec3> footprintOf(const ConvexPolyhedron& solid, const Plane& plane, double tolerance) {
+  if (solid.empty()) return {};
+  const auto [e1, e2] = planeAxes(plane);
+  Polygon2 projected;
+  for (const Vec3& v : solid.vertices()) {
+    if (plane.signedDistance(v) <= tolerance) return {};  // reaches the plane or lies behind it
+    projected.emplace_back(v.dot(e1), v.dot(e2));
+  }
+  const Polygon2 hull = convexHull(std::move(projected));
+  if (hull.size() < 3) return {};  // seen edge-on: a vertical sheet has no area over the plane
+  std::vector<Vec3> footprint;  // (e1, e2, normal) is orthonormal: on the plane, v·normal = offset
+  for (const Eigen::Vector2d& p : hull) {
+    footprint.push_back(p.x() * e1 + p.y() * e2 + plane.offset * plane.normal);
+  }
+  return footprint;
+}
+
+std::vector<SolidSection> solidFootprints(const Scene& scene, const Plane& plane) {
+  const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  std::vector<SolidSection> footprints;
+  for (const Solid& solid : scene.solids) {
+    if (solid.name.starts_with("room.")) continue;
+    std::vector<Vec3> polygon = footprintOf(solid.shape, plane, tolerance);
+    if (!polygon.empty()) footprints.push_back({solid.name, false, std::move(polygon)});
+  }
+  return footprints;
 }
 
 std::vector<SolidSection> solidSections(const Scene& scene, const Plane& plane) {

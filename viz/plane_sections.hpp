@@ -24,6 +24,15 @@ std::vector<Vec3> sectionOf(const ConvexPolyhedron& solid, const Plane& plane, d
 // Every solid with a section, in scene order. `plane`'s normal is the grid's.
 std::vector<SolidSection> solidSections(const Scene& scene, const Plane& plane);
 
+// The outline of `solid` seen along the plane's normal, on the plane (the convex hull of its
+// vertices projected onto it, counter-clockwise about the normal), when the whole solid lies in
+// front of the plane farther than `tolerance`: a desk top or a shelf over a work plane. Empty
+// otherwise (a solid the plane cuts has a section instead).
+std::vector<Vec3> footprintOf(const ConvexPolyhedron& solid, const Plane& plane, double tolerance);
+
+// Every solid other than the room's slabs with a footprint, in scene order.
+std::vector<SolidSection> solidFootprints(const Scene& scene, const Plane& plane);
+
 // The section of the room's interior box [0, X] × [0, Y] × [0, Z]; empty without a room or when
 // the plane misses it.
 std::vector<Vec3> roomOutline(const Scene& scene, const Plane& plane);

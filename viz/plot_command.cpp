@@ -16,6 +16,7 @@
 #include "scene/scene_loader.hpp"
 #include "viz/colour_scale.hpp"
 #include "viz/plot_files.hpp"
+#include "viz/plot_pictures.hpp"
 #include "viz/render_png.hpp"
 
 namespace penumbra::viz {
@@ -65,14 +66,28 @@ int run(const PlotOptions& options) {
   const PlotProgress progress = [&](const std::string& what) {
     if (!options.quiet) fmt::print(stderr, "penumbra: {}\n", what);
   };
+  // The data files first, all together (the results are there already); then the pictures,
+  // drawn from them where VTK's failure cannot end this process.
   StagedDirectory staged(options.folder);
   const std::vector<PlotFile> written =
-      drawPlots(results, scene, light, options, staged.staging(), progress);
+      writePlotData(results, scene, light, options, staged.staging(), progress);
   staged.commit();
+  const PicturesWritten pictures =
+      drawPlotPictures(results, scene, options, options.folder, progress);
   if (!options.quiet) {
     for (const PlotFile& file : written) fmt::print("{}\n", file.description);
+    fmt::print("{} picture{} drawn, {} kept (the same data)\n", pictures.drawn,
+               pictures.drawn == 1 ? "" : "s", pictures.kept);
     fmt::print("plots in {} ({:.1f} s)\n", normalizedTarget(options.folder).string(),
                std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  if (!pictures.missing.empty()) {
+    fmt::print(stderr,
+               "penumbra: error: {}: {}\n  the results and the ParaView files are written; "
+               "`penumbra plot {}` draws only the missing pictures\n",
+               normalizedTarget(options.folder).string(), missingPictures(pictures, "picture"),
+               options.folder.string());
+    return 1;
   }
   return 0;
 }

@@ -9,12 +9,8 @@
 #include "grid/scene_grids.hpp"
 #include "output/result_files.hpp"
 #include "scene/scene_loader.hpp"
-#include "viz/colour_scale.hpp"
 #include "viz/grid_dataset.hpp"
-#include "viz/heat_map.hpp"
 #include "viz/isoband_svg.hpp"
-#include "viz/isolux_lines.hpp"
-#include "viz/planar_field.hpp"
 #include "viz/surfaces_plot.hpp"
 
 namespace penumbra::viz {
@@ -23,49 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The line under a heat map's metrics: where the numbers come from.
-std::string heatMapSubtitle(const GridReport& grid, const PlanarField& field,
-                            const std::string& sceneName) {
-  std::string where;
-  if (grid.kind == GridKind::WorkPlane) {
-    where = fmt::format("work plane at {:.2f} m", field.first.z());
-  } else {
-    where = fmt::format("rectangle facing ({:.3g}, {:.3g}, {:.3g})", field.normal.x(),
-                        field.normal.y(), field.normal.z());
-  }
-  std::string text =
-      fmt::format("{} · {} · {} × {} points, {:.3g} m × {:.3g} m apart", sceneName, where,
-                  field.columns, field.rows, field.uStep.norm(), field.vStep.norm());
-  if (grid.metrics.pointsInsideSolids > 0) {
-    text += fmt::format(" · {} inside solids, left out", grid.metrics.pointsInsideSolids);
-  }
-  return text;
-}
-
-std::vector<double> isoluxFor(const PlotOptions& options, const GridMetrics& metrics) {
-  if (options.noIsolux) return {};
-  if (!options.isolux.empty()) return options.isolux;
-  return autoIsoluxLevels(metrics.eMin, metrics.eMax);
-}
-
-void plotGrid(const GridReport& grid, const Scene& scene, const PlotOptions& options,
-              const std::string& sceneName, const fs::path& directory,
-              std::vector<PlotFile>& written) {
+void writeGridData(const GridReport& grid, const fs::path& directory,
+                   std::vector<PlotFile>& written) {
   const std::string dataset = gridDatasetFileName(grid);
   writeGridDataset(grid, directory / dataset);
   written.push_back({dataset, dataset, false});
-  if (grid.kind == GridKind::Points) return;
-
-  const PlanarField field = planarField(grid);
-  HeatMapStyle style;
-  style.scale = colourScale(options.legend, grid.metrics.eMin, grid.metrics.eMax);
-  style.isolux = isoluxFor(options, grid.metrics);
-  style.width = options.width;
-  style.subtitle = heatMapSubtitle(grid, field, sceneName);
-  const std::string png = gridFileStem(grid.name) + ".png";
-  const HeatMapFigure figure = drawHeatMap(field, grid.metrics, scene, style, directory / png);
-  written.push_back(
-      {png, fmt::format("{} ({} × {} px)", png, figure.layout.width, figure.layout.height), true});
 }
 
 }  // namespace
@@ -119,17 +77,14 @@ std::string plotLightName(const RunReport& run, const Scene& scene) {
          (maintenance.empty() ? "" : ", " + maintenance);
 }
 
-std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const PointLight& light,
-                                const PlotOptions& options, const fs::path& directory,
-                                const PlotProgress& progress) {
-  // The scene's own order of parameters (summary.json keeps them sorted by name).
-  const std::string sceneName = plotSceneName(run.sceneFile, scene.parameters);
+std::vector<PlotFile> writePlotData(const RunReport& run, const Scene& scene,
+                                    const PointLight& light, const PlotOptions& options,
+                                    const fs::path& directory, const PlotProgress& progress) {
   const bool withSurfaces = !scene.solids.empty();
   plotFileNames(run, withSurfaces);  // refuses clashing names before anything is drawn
   std::vector<PlotFile> written;
   for (const GridReport& grid : run.grids) {
-    if (progress) progress("plotting " + grid.name);
-    plotGrid(grid, scene, options, sceneName, directory, written);
+    writeGridData(grid, directory, written);
     if (options.isobands > 0 && grid.kind != GridKind::Points) {
       const auto planar =
           std::find_if(scene.grids.begin(), scene.grids.end(),
@@ -146,15 +101,11 @@ std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const 
   }
   if (withSurfaces) {
     if (progress) progress("illuminance on the room's surfaces");
-    const SurfacesPlot surfaces =
-        plotSurfaces(scene, light, plotLightName(run, scene), options, sceneName, directory);
+    const SurfacesPlot surfaces = writeSurfacesFile(scene, light, options, directory);
     written.push_back(
         {"surfaces.vtp",
          fmt::format("surfaces.vtp ({} points, {} m apart)", surfaces.points, surfaces.spacing),
          false});
-    written.push_back({"surfaces.png",
-                       fmt::format("surfaces.png ({} × {} px)", surfaces.width, surfaces.height),
-                       true});
   }
   return written;
 }

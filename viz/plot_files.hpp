@@ -1,7 +1,9 @@
 #pragma once
-// The plots of one finished grid run, drawn into a folder: what `penumbra plot` writes beside a
-// run's results, and what a sweep draws into each case's folder (case_plots.hpp). One function
-// for both, so that a case's plots are the very pictures `penumbra grid --set ... --plot` draws.
+// The plots of one finished grid run, written into a folder: what `penumbra plot` writes beside a
+// run's results, and what a sweep writes into each case's folder (case_plots.hpp). One function
+// for both, so that a case's plots are the very files `penumbra grid --set ... --plot` writes.
+// Here the files computed in this process (ParaView files, iso-band SVGs); the PNGs are drawn
+// from them by plot_pictures.hpp, where a failure of VTK cannot end the process.
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -43,12 +45,14 @@ using PlotProgress = std::function<void(const std::string& what)>;
 // Only those: all of a scene's parameters would not fit on the line.
 std::string plotSceneName(const std::filesystem::path& sceneFile, const ParameterValues& values);
 
-// Draws every plot of `run` into the existing `directory`. `scene` is the run's scene, loaded
-// with the run's parameter values; `light` answers for it (plotEstimatorOptions) and is asked
-// only when the scene has solids or iso-bands are drawn. Throws std::runtime_error (clashing
-// names, files) and std::invalid_argument (options).
-std::vector<PlotFile> drawPlots(const RunReport& run, const Scene& scene, const PointLight& light,
-                                const PlotOptions& options, const std::filesystem::path& directory,
-                                const PlotProgress& progress = {});
+// Writes the data files of `run`'s plots into the existing `directory`: <grid>.vti / .vtp,
+// <grid>.svg with iso-bands, surfaces.vtp. `scene` is the run's scene, loaded with the run's
+// parameter values; `light` answers for it (plotEstimatorOptions) and is asked only when the
+// scene has solids or iso-bands are drawn. Throws std::runtime_error (clashing names, files) and
+// std::invalid_argument (options).
+std::vector<PlotFile> writePlotData(const RunReport& run, const Scene& scene,
+                                    const PointLight& light, const PlotOptions& options,
+                                    const std::filesystem::path& directory,
+                                    const PlotProgress& progress = {});
 
 }  // namespace penumbra::viz

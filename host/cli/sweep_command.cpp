@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <stdexcept>
@@ -54,6 +55,23 @@ int reportMissingCharts(const TableSummary& table, const std::filesystem::path& 
              "charts\n",
              table.chartsMissing.size(), table.chartsMissing.size() == 1 ? "" : "s",
              normalizedTarget(output).string(), names, table.chartsError, rerun);
+  return 1;
+}
+
+// Case pictures that could not be drawn: named, with the error (the cases' results are there),
+// and exit status 1.
+int reportMissingPictures(const SweepSummary& summary, const std::filesystem::path& output) {
+  if (summary.picturesMissing.empty()) return 0;
+  std::string names;
+  for (const std::string& name : summary.picturesMissing) {
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  fmt::print(stderr,
+             "penumbra: error: {} case picture{} not drawn in {} ({}): {}\n"
+             "  the cases' results are written; the same command run again draws only the "
+             "missing pictures\n",
+             summary.picturesMissing.size(), summary.picturesMissing.size() == 1 ? "" : "s",
+             normalizedTarget(output).string(), names, summary.picturesError);
   return 1;
 }
 
@@ -140,9 +158,13 @@ int runSweepCommand(const SweepOptions& options) {
     const SweepSummary summary = runSweep(study, settings, progress);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (options.quiet) {
-      return reportMissingCharts(summary.table, options.output, "the same command run again");
-    }
+    const auto failures = [&] {
+      const int pictures = reportMissingPictures(summary, options.output);
+      const int charts =
+          reportMissingCharts(summary.table, options.output, "the same command run again");
+      return std::max(pictures, charts);
+    };
+    if (options.quiet) return failures();
     std::string shard;
     if (settings.shard.count > 1) {
       shard = fmt::format(" (shard {}/{})", settings.shard.index, settings.shard.count);
@@ -155,7 +177,7 @@ int runSweepCommand(const SweepOptions& options) {
                summary.skipped, seconds, summary.device.empty() ? "" : " · on " + summary.device);
     for (const std::string& note : summary.outputNotes) fmt::print("{}\n", note);
     printTable(summary.table, options.output);
-    return reportMissingCharts(summary.table, options.output, "the same command run again");
+    return failures();
   });
 }
 

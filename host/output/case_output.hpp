@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "grid/run_report.hpp"
+#include "output/picture_files.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -33,6 +34,17 @@ class CaseOutputWriter {
   // state from one case to the next.
   virtual std::vector<std::string> write(const Scene& scene, const RunReport& report,
                                          const std::filesystem::path& directory) = 0;
+
+  // Draws the pictures of the finished case folder `directory` that are not there yet: those whose
+  // drawing may end the process that draws them (VTK without its display), so they are drawn
+  // after the case's results are in place, where that failure is caught
+  // (output/picture_files.hpp). Called after each case is written and, on every later run, for
+  // the cases finished before it, so that a rerun draws only what is missing. The images it
+  // draws are among those write() listed. Returns what it drew, kept and could not draw.
+  virtual PicturesWritten drawPictures(const Scene& /*scene*/,
+                                       const std::filesystem::path& /*directory*/) {
+    return {};
+  }
 };
 
 }  // namespace penumbra

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -57,13 +56,6 @@ std::string chartFingerprint(const LineChart& chart) {
   return h.hex();
 }
 
-// {} when there is no such file or it is not JSON: every chart is then drawn again.
-nlohmann::json readDrawnCharts(const fs::path& file) {
-  std::ifstream in(file);
-  nlohmann::json drawn = nlohmann::json::parse(in, nullptr, false);
-  return drawn.is_object() ? drawn : nlohmann::json::object();
-}
-
 }  // namespace
 
 void writeCaseFolder(const fs::path& folder, const Scene& scene, const RunReport& report,
@@ -107,40 +99,18 @@ void writeTextFiles(const fs::path& out,
 
 ChartsWritten writeCharts(const fs::path& directory, const std::vector<ChartFile>& charts,
                           const ChartWriter& writer) {
-  const nlohmann::json previous = readDrawnCharts(directory / kDrawnCharts);
-  nlohmann::ordered_json drawn = nlohmann::ordered_json::object();
-  std::vector<ChartFile> toDraw;
-  ChartsWritten written;
-  for (const ChartFile& c : charts) {
-    const std::string fingerprint = chartFingerprint(c.chart);
-    if (fs::exists(directory / c.fileName) && previous.value(c.fileName, "") == fingerprint) {
-      drawn[c.fileName] = fingerprint;
-      ++written.kept;
-    } else {
-      toDraw.push_back(c);
-    }
-  }
-  StagedDirectory staged(directory);
-  if (!toDraw.empty()) {
-    try {
-      writer.draw(toDraw, staged.staging());
-    } catch (const std::exception& e) {
-      written.why = e.what();
-    }
-  }
-  for (const ChartFile& c : toDraw) {
-    if (fs::exists(staged.staging() / c.fileName)) {
-      drawn[c.fileName] = chartFingerprint(c.chart);
-      ++written.drawn;
-    } else {
-      written.missing.push_back(c.fileName);
-    }
-  }
-  if (!written.missing.empty() && written.why.empty()) written.why = "the chart writer wrote none";
-  writeFile(staged.staging() / kDrawnCharts,
-            [&](std::ostream& out) { out << drawn.dump(2) << "\n"; });
-  staged.commit();
-  return written;
+  std::vector<PictureFile> pictures;
+  for (const ChartFile& c : charts) pictures.push_back({c.fileName, chartFingerprint(c.chart)});
+  return writePictures(directory, kDrawnCharts, pictures,
+                       [&](const std::vector<std::string>& names, const fs::path& staging) {
+                         std::vector<ChartFile> toDraw;
+                         for (const ChartFile& c : charts) {
+                           if (std::find(names.begin(), names.end(), c.fileName) != names.end()) {
+                             toDraw.push_back(c);
+                           }
+                         }
+                         writer.draw(toDraw, staging);
+                       });
 }
 
 }  // namespace penumbra

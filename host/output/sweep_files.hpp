@@ -14,6 +14,7 @@
 #include "grid/run_report.hpp"
 #include "output/case_output.hpp"
 #include "output/line_chart.hpp"
+#include "output/picture_files.hpp"
 #include "scene/scene.hpp"
 
 namespace penumbra {
@@ -34,12 +35,7 @@ struct ChartWriter {
   explicit operator bool() const { return static_cast<bool>(draw); }
 };
 
-struct ChartsWritten {
-  std::size_t drawn = 0;             // by this call
-  std::size_t kept = 0;              // already there, showing the same data
-  std::vector<std::string> missing;  // file names the writer did not draw
-  std::string why;                   // the writer's error, when some are missing
-};
+using ChartsWritten = PicturesWritten;
 
 // Writes one finished case into `folder` (OUT/cases/<id>): the files `penumbra grid` writes, then
 // those of every writer in `outputs`, in order, and last `case.json` (= `caseJson` with
@@ -58,11 +54,9 @@ void copyCaseFolder(const std::filesystem::path& from, const std::filesystem::pa
 void writeTextFiles(const std::filesystem::path& out,
                     const std::vector<std::pair<std::string, std::string>>& files);
 
-// The charts in `directory`: a PNG that is there and shows the same data (charts.json beside them
-// records a fingerprint of each chart's data) is kept; the others are drawn with `writer` into a
-// staging folder and renamed into place. A writer that fails halfway costs only the charts it did
-// not draw: those drawn are kept, the rest named in `missing`, so that the next call draws only
-// them.
+// The charts in `directory`, by writePictures (charts.json beside them records a fingerprint of
+// each chart's data): a writer that fails halfway costs only the charts it did not draw, and the
+// next call draws only them.
 ChartsWritten writeCharts(const std::filesystem::path& directory,
                           const std::vector<ChartFile>& charts, const ChartWriter& writer);
 

@@ -108,6 +108,18 @@ std::vector<std::string> namesOf(const std::vector<CaseOutputWriter*>& writers) 
   return names;
 }
 
+// The pictures of the finished case `c` the writers have not drawn yet (case_output.hpp).
+void drawCasePictures(const fs::path& out, const PlannedCase& c, const Scene& scene,
+                      const std::vector<CaseOutputWriter*>& outputs, SweepSummary& summary) {
+  for (CaseOutputWriter* writer : outputs) {
+    const PicturesWritten drawn = writer->drawPictures(scene, caseFolder(out, c.id));
+    for (const std::string& name : drawn.missing) {
+      summary.picturesMissing.push_back(fmt::format("{}/{}/{}", kCasesFolder, c.id, name));
+    }
+    if (summary.picturesError.empty()) summary.picturesError = drawn.why;
+  }
+}
+
 void checkResume(const SweepSettings& settings, const StudyLayout& layout) {
   const std::optional<StudyLayout> previous = readLayout(settings.output);
   if (!settings.resume) return;
@@ -141,6 +153,17 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
   writeLayout(settings.output, layout);
   const std::vector<const PlannedCase*> pending =
       casesToCompute(layout, settings.shard, settings.output, summary);
+  // Pictures an earlier run could not draw (its display went away) are drawn first.
+  if (!outputs.empty() && summary.skipped > 0) {
+    for (std::size_t i = 0; i < layout.cases.size(); ++i) {
+      const PlannedCase& c = layout.cases[i];
+      if (!settings.shard.contains(i) ||
+          std::find(pending.begin(), pending.end(), &c) != pending.end()) {
+        continue;
+      }
+      drawCasePictures(settings.output, c, loadCaseScene(study, c), outputs, summary);
+    }
+  }
 
   std::unique_ptr<Scene> scene;
   std::unique_ptr<Estimator> estimator;
@@ -170,6 +193,7 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     }
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
     writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
+    drawCasePictures(settings.output, *c, *scene, outputs, summary);
     ++summary.computed;
     if (stale) ++summary.recomputed;
     observer.caseFinished(record, secondsSince(start));

@@ -59,6 +59,11 @@ struct SweepSummary {
   std::string device;          // empty when nothing was computed
   // Per-case outputs asked for but not written, each "<name>: none (<why>)".
   std::vector<std::string> outputNotes;
+  // Case pictures that could not be drawn ("cases/case-002/work-plane.png"; the cases' results
+  // are written all the same) and the first error: the command then fails, and a rerun draws
+  // only these.
+  std::vector<std::string> picturesMissing;
+  std::string picturesError;
   TableSummary table;
 };
 
