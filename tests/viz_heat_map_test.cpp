@@ -16,6 +16,7 @@
 #include "viz/colour_scale.hpp"
 #include "viz/heat_map.hpp"
 #include "viz/isolux_lines.hpp"
+#include "viz/overlay.hpp"
 #include "viz/planar_field.hpp"
 #include "viz/plane_sections.hpp"
 #include "viz_test_support.hpp"
@@ -267,6 +268,32 @@ TEST(Footprints, TheHeatMapDrawsThoseOverTheGrid) {
   EXPECT_EQ(sections.size(), 1u);
   EXPECT_EQ(sections["cabinet"], (Corners{{5.5, 2.8}, {6.0, 2.8}, {6.0, 3.9}, {5.5, 3.9}}));
   EXPECT_EQ(Png(dir.path() / "furnished.png").width(), 1000);
+}
+
+// The dashes of a footprint's outline: along a closed 10 px square with 3 px dashes, every other
+// 3 px of the 40 px perimeter is drawn (seven dashes, the last ending 1 px before the start),
+// each dash on the square's edges.
+TEST(Footprints, DashesAlternateAlongTheOutline) {
+  const std::vector<Eigen::Vector2d> square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const auto pieces = dashes(square, true, 3.0);
+  ASSERT_EQ(pieces.size(), 7u);
+  double drawn = 0.0;
+  for (const auto& piece : pieces) {
+    double length = 0.0;
+    for (std::size_t i = 0; i + 1 < piece.size(); ++i) length += (piece[i + 1] - piece[i]).norm();
+    EXPECT_NEAR(length, 3.0, 1e-12);
+    drawn += length;
+    for (const Eigen::Vector2d& p : piece) {
+      const bool onEdge = std::abs(p.x()) < 1e-12 || std::abs(p.x() - 10) < 1e-12 ||
+                          std::abs(p.y()) < 1e-12 || std::abs(p.y() - 10) < 1e-12;
+      EXPECT_TRUE(onEdge) << p.transpose();
+    }
+  }
+  EXPECT_NEAR(drawn, 21.0, 1e-12);
+  EXPECT_TRUE(pieces[1].front().isApprox(Eigen::Vector2d(6, 0)));
+  EXPECT_TRUE(pieces[1].back().isApprox(Eigen::Vector2d(9, 0)));
+  // The dash from 18 to 21 px bends round the corner at (10, 10).
+  EXPECT_EQ(pieces[3].size(), 3u);
 }
 
 TEST(IsoluxLevels, FollowTheOneTwoFiveSeriesOrARoundStep) {
