@@ -52,8 +52,8 @@ fs::path writeHall(double side) {
   return file;
 }
 
-HallResult solveHall(const std::string& device, double side, const MeshOptions& mesh) {
-  const Scene scene = loadScene(writeHall(side));
+HallResult solveScene(const std::string& device, const fs::path& file, const MeshOptions& mesh) {
+  const Scene scene = loadScene(file);
   compute::Device d = compute::Device::select(device);
   const auto start = Clock::now();
   IlluminanceEngine direct(d, scene);
@@ -69,8 +69,8 @@ HallResult solveHall(const std::string& device, double side, const MeshOptions& 
   return result;
 }
 
-// solveHall in a child process: its result through a pipe, its peak memory from wait4.
-bool solveInChild(const std::string& device, double side, const MeshOptions& mesh,
+// solveScene in a child process: its result through a pipe, its peak memory from wait4.
+bool solveInChild(const std::string& device, const fs::path& file, const MeshOptions& mesh,
                   HallResult& result) {
   int pipeEnds[2];
   if (pipe(pipeEnds) != 0) return false;
@@ -79,9 +79,9 @@ bool solveInChild(const std::string& device, double side, const MeshOptions& mes
     close(pipeEnds[0]);
     HallResult r;
     try {
-      r = solveHall(device, side, mesh);
+      r = solveScene(device, file, mesh);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "hall %g m: %s\n", side, e.what());
+      std::fprintf(stderr, "%s: %s\n", file.string().c_str(), e.what());
       _exit(1);
     }
     const ssize_t written = write(pipeEnds[1], &r, sizeof r);
@@ -106,9 +106,9 @@ std::vector<double> parseList(const std::string& text) {
 }
 
 void printRows(const std::string& title, const std::vector<HallResult>& rows,
-               const std::vector<double>& sides) {
+               const std::vector<std::string>& labels) {
   fmt::print("\n{}\n", title);
-  fmt::print("{:>8} {:>9} {:>11} {:>8} {:>11} {:>8} {:>8} {:>10} {:>11} {:>12}\n", "side [m]",
+  fmt::print("{:>8} {:>9} {:>11} {:>8} {:>11} {:>8} {:>8} {:>10} {:>11} {:>12}\n", "scene",
              "elements", "links", "mesh [s]", "transfer [s]", "solve [s]", "total [s]", "peak [MB]",
              "time slope", "memory slope");
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -120,8 +120,8 @@ void printRows(const std::string& title, const std::vector<HallResult>& rows,
                            std::log(r.totalSeconds / rows[i - 1].totalSeconds) / n,
                            std::log(r.peakMegabytes / rows[i - 1].peakMegabytes) / n);
     }
-    fmt::print("{:>8g} {:>9.0f} {:>11.0f} {:>8.2f} {:>11.2f} {:>8.3f} {:>8.2f} {:>10.0f} {}\n",
-               sides[i], r.elements, r.links, r.meshSeconds, r.transferSeconds, r.solveSeconds,
+    fmt::print("{:>8} {:>9.0f} {:>11.0f} {:>8.2f} {:>11.2f} {:>8.3f} {:>8.2f} {:>10.0f} {}\n",
+               labels[i], r.elements, r.links, r.meshSeconds, r.transferSeconds, r.solveSeconds,
                r.totalSeconds, r.peakMegabytes, slopes);
   }
 }
@@ -131,33 +131,50 @@ void printRows(const std::string& title, const std::vector<HallResult>& rows,
 int main(int argc, char** argv) {
   std::string device = "cpu";
   std::vector<double> sides = {10, 20, 40, 70, 110};
+  std::string sceneFile, transfer = "both";
   double linkError = 2e-3;
   for (int i = 1; i + 1 < argc; i += 2) {
     const std::string key = argv[i];
     if (key == "--device") device = argv[i + 1];
     if (key == "--sides") sides = parseList(argv[i + 1]);
+    if (key == "--scene") sceneFile = argv[i + 1];
+    if (key == "--transfer") transfer = argv[i + 1];
     if (key == "--link-error") linkError = std::stod(argv[i + 1]);
+  }
+  // The scenes: the given one, or the halls (labelled by their side in m).
+  std::vector<fs::path> files;
+  std::vector<std::string> labels;
+  if (!sceneFile.empty()) {
+    files.push_back(sceneFile);
+    labels.push_back(fs::path(sceneFile).stem().string());
+  } else {
+    for (double side : sides) {
+      files.push_back(writeHall(side));
+      labels.push_back(fmt::format("{:g} m", side));
+    }
   }
   MeshOptions hierarchical;
   hierarchical.linkError = linkError;
   std::vector<HallResult> rows, denseRows;
-  std::vector<double> denseSides;
-  for (double side : sides) {
+  std::vector<std::string> denseLabels;
+  for (std::size_t i = 0; i < files.size(); ++i) {
     HallResult r;
-    if (!solveInChild(device, side, hierarchical, r)) return 1;
-    rows.push_back(r);
+    if (transfer != "dense") {
+      if (!solveInChild(device, files[i], hierarchical, r)) return 1;
+      rows.push_back(r);
+    }
     MeshOptions dense;
-    if (r.elements <= static_cast<double>(dense.maxElements)) {
+    if (transfer != "hierarchical" && r.elements <= static_cast<double>(dense.maxElements)) {
       HallResult d;
-      if (solveInChild(device, side, dense, d)) {
+      if (solveInChild(device, files[i], dense, d)) {
         denseRows.push_back(d);
-        denseSides.push_back(side);
+        denseLabels.push_back(labels[i]);
       }
     }
   }
-  printRows(
-      fmt::format("Hierarchical transfer, link error {:g} (elements of 0.5 m, rho 0.5)", linkError),
-      rows, sides);
-  printRows("Dense transfer, where it fits (8 000 elements)", denseRows, denseSides);
+  if (!rows.empty())
+    printRows(fmt::format("Hierarchical transfer, link error {:g} (elements of 0.5 m)", linkError),
+              rows, labels);
+  printRows("Dense transfer, where it fits (8 000 elements)", denseRows, denseLabels);
   return 0;
 }

@@ -238,10 +238,17 @@ void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows
     f.aperture = static_cast<int>(packed.apertures.size());
     packed.apertures.push_back(packAperture(*emitting.aperture, r));
   }
-  f.firstOccluder = static_cast<int>(packed.occluders.size());
-  for (const ShadowCaster& caster : emitting.casters)
-    appendOccluder(packed, caster, face, tolerance, r);
-  f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
+  if (emitting.casterOwner >= 0) {
+    // The owner was packed before: its occluders serve this face too.
+    const PnSourceFace& owner = packed.faces[static_cast<std::size_t>(emitting.casterOwner)];
+    f.firstOccluder = owner.firstOccluder;
+    f.occluderCount = owner.occluderCount;
+  } else {
+    f.firstOccluder = static_cast<int>(packed.occluders.size());
+    for (const ShadowCaster& caster : emitting.casters)
+      appendOccluder(packed, caster, face, tolerance, r);
+    f.occluderCount = static_cast<int>(packed.occluders.size()) - f.firstOccluder;
+  }
   packed.faces.push_back(f);
 }
 

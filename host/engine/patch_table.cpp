@@ -180,11 +180,12 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
     const std::size_t f = sf % faceCount;
-    std::vector<int> all(volumes[f].solid.size());
+    const FaceVolumes& faceVolumes = volumes[shadows.faces[f].casterFace(f)];
+    std::vector<int> all(faceVolumes.solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
     const BoundingBox box = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
-    boxCandidates(volumes[f], box, all, margin, superCandidates[sf]);
-    superHidden[sf] = boxHidden(volumes[f], box, superCandidates[sf], margin, points,
+    boxCandidates(faceVolumes, box, all, margin, superCandidates[sf]);
+    superHidden[sf] = boxHidden(faceVolumes, box, superCandidates[sf], margin, points,
                                 firstItem * PN_LANES, items * PN_LANES);
   });
   std::vector<Plane> emission(faceCount);
@@ -201,16 +202,17 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     std::vector<int> near, found;
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
+      const FaceVolumes& faceVolumes = volumes[face.casterFace(f)];
       // A caster that hides the face from a whole super-group or group (a wall between it and
       // another room's light) hides it from each of its work-items.
       const std::size_t sf = g / kGroupsPerSuper * faceCount + f;
       bool groupHidden = superHidden[sf];
       if (!groupHidden) {
-        boxCandidates(volumes[f], groupBox, superCandidates[sf], margin, near);
-        groupHidden = boxHidden(volumes[f], groupBox, near, margin, points, firstItem * PN_LANES,
+        boxCandidates(faceVolumes, groupBox, superCandidates[sf], margin, near);
+        groupHidden = boxHidden(faceVolumes, groupBox, near, margin, points, firstItem * PN_LANES,
                                 items * PN_LANES);
       }
-      const FaceOfPatch of{face, volumes[f], emission[f], packed.faces[f].firstOccluder};
+      const FaceOfPatch of{face, faceVolumes, emission[f], packed.faces[f].firstOccluder};
       for (std::size_t w = firstItem; w < firstItem + items; ++w)
         table.entries[w * faceCount + f] = patchEntry(of, points, w, itemBoxes[w - firstItem], near,
                                                       groupHidden, margin, found, list);
@@ -265,14 +267,15 @@ PatchTable buildLinkPatchTable(const SceneShadows& shadows, std::span<const Face
       for (cl_int j = 0; j < count; ++j) {
         const auto f = static_cast<std::size_t>(links.faces[links.start[first] + j]);
         const EmittingFaceShadows& face = shadows.faces[f];
+        const FaceVolumes& faceVolumes = volumes[face.casterFace(f)];
         BoundingBox shaft = runBox;
         for (const Vec3& v : face.face.vertices()) shaft.add(v);
         shaft = shaft.grown(margin);
         near.clear();
-        for (std::size_t c = 0; c < volumes[f].box.size(); ++c)
-          if (volumes[f].box[c].overlaps(shaft)) near.push_back(static_cast<int>(c));
+        for (std::size_t c = 0; c < faceVolumes.box.size(); ++c)
+          if (faceVolumes.box[c].overlaps(shaft)) near.push_back(static_cast<int>(c));
         const Plane emission = face.face.plane();
-        const FaceOfPatch of{face, volumes[f], emission, packed.faces[f].firstOccluder};
+        const FaceOfPatch of{face, faceVolumes, emission, packed.faces[f].firstOccluder};
         for (std::size_t w = first; w < last; ++w)
           table.entries[links.start[w] + j] = patchEntry(of, points, w, itemBoxes[w - first], near,
                                                          false, margin, found, groupCandidates[g]);

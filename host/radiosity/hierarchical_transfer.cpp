@@ -153,6 +153,16 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
     for (const auto& [p, q] : list) senders[static_cast<std::size_t>(p)].push_back(q);
 
   nodeScene_ = elementScene(scene, allNodes(tree));
+  // Each node shares the shadow casters of its highest ancestor that can be linked (no larger
+  // than largestLinkedNode): the casters are built per such node, a few per piece, rather than
+  // per node (EmittingFaceShadows::casterOwner says why that stays exact).
+  for (std::size_t i = 0; i < n && options_.shareCasters; ++i) {
+    int owner = static_cast<int>(i);
+    for (int up = tree.nodes[i].parent;
+         up >= 0 && tree.nodes[up].size <= options_.largestLinkedNode; up = tree.nodes[up].parent)
+      owner = up;
+    if (owner != static_cast<int>(i)) nodeScene_.sources[i].castersOf = owner;
+  }
   engine_ = std::make_unique<IlluminanceEngine>(device, nodeScene_, engine);
 
   // Each receiving node's quadrature nodes, in work-items of PN_LANES (the last padded with its

@@ -30,6 +30,10 @@ struct HierarchyOptions {
   // between a point and one source face in fixed room (PN_MAX_CONTOUR_EDGES), and a large node
   // seen past many solids (a whole floor past an office's desks) overflows it.
   double largestLinkedNode = 2.0;
+  // Nodes share the shadow casters of their largest linkable ancestor (the transfer's memory and
+  // set-up grow with the pieces rather than the nodes; EmittingFaceShadows::casterOwner). Off:
+  // each node its own, the dense transfer's casters and floats.
+  bool shareCasters = true;
 };
 
 // The links of a tree, receiver by receiver (compressed rows over all tree nodes).

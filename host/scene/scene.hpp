@@ -46,6 +46,10 @@ struct Source {
   Vec3 luminanceAxis = Vec3::Zero();          // unit w; zero: −N of each face
   Vec3 color = Vec3::Ones();
   std::string opening;  // the room opening an `opening:` source fills; empty for other sources
+  // Another source (index into Scene::sources) whose first face holds this source's one face in
+  // its own plane: this face's shadow casters are that face's (shadow/scene_shadows.hpp). -1:
+  // its own. Set for the element trees' nodes, never read from a scene file.
+  int castersOf = -1;
   double emittingArea() const;  // m², all faces
   Vec3 polynomialAxis(const ConvexPolygon& face) const {
     return luminanceAxis.isZero() ? Vec3(-face.normal()) : luminanceAxis;

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <stdexcept>
 
 namespace penumbra {
 
@@ -14,10 +15,23 @@ SceneShadows buildSceneShadows(const Scene& scene,
                                const std::function<void(EmittingFaceShadows&)>& consume) {
   SceneShadows shadows;
   shadows.tolerance = Tolerance::forSceneSize(scene.size());
-  for (std::size_t s = 0; s < scene.sources.size(); ++s)
+  std::vector<int> firstFace(scene.sources.size(), -1);
+  for (std::size_t s = 0; s < scene.sources.size(); ++s) {
+    firstFace[s] = static_cast<int>(shadows.faces.size());
     for (const ConvexPolygon& face : scene.sources[s].faces)
       shadows.faces.push_back(EmittingFaceShadows{
           static_cast<int>(s), face, {}, findAperture(scene, face, shadows.tolerance)});
+  }
+  for (std::size_t s = 0; s < scene.sources.size(); ++s) {
+    const int owner = scene.sources[s].castersOf;
+    if (owner < 0) continue;
+    if (scene.sources[s].faces.size() != 1 || owner >= static_cast<int>(s) ||
+        scene.sources[owner].castersOf >= 0)
+      throw std::logic_error(
+          "buildSceneShadows: a source shares the casters of an earlier "
+          "source that has its own, and has one face");
+    shadows.faces[firstFace[s]].casterOwner = firstFace[owner];
+  }
 
   // Every (face, solid) pair is independent: build them in parallel, a block of faces at a time
   // (so that a consumer that drops the casters holds one block's), then keep the non-empty ones
@@ -30,6 +44,7 @@ SceneShadows buildSceneShadows(const Scene& scene,
     all.assign(count * solids, ShadowCaster{});
     tbb::parallel_for(std::size_t{0}, all.size(), [&](std::size_t k) {
       const EmittingFaceShadows& f = shadows.faces[first + k / solids];
+      if (f.casterOwner >= 0) return;
       ShadowCaster& caster = all[k];
       caster.solid = static_cast<int>(k % solids);
       caster.shape = scene.solids[caster.solid].shape.clipped(f.face.plane().flipped(),

@@ -27,6 +27,18 @@ struct EmittingFaceShadows {
   ConvexPolygon face;
   std::vector<ShadowCaster> casters;
   std::optional<Aperture> aperture;  // a window's sky seen through the opening (aperture.hpp)
+  // The face (index into SceneShadows::faces, an earlier one) whose casters serve this face, or
+  // -1 for its own (Source::castersOf). A face inside another, in its plane, can share them: the
+  // solids clipped to the same front half-space are the same, a smaller source's penumbra
+  // volume lies inside the larger's and its umbra holds the larger's, and a plane that separates
+  // the larger face from a solid separates the smaller one too; so the shared volumes only
+  // cull less tightly, and the kernel's integral over the candidates stays exact. The element
+  // trees' nodes share their ancestor's: a tree of thousands of nodes over a room of hundreds of
+  // solids builds its pieces' casters, not every node's.
+  int casterOwner = -1;
+  std::size_t casterFace(std::size_t self) const {
+    return casterOwner < 0 ? self : static_cast<std::size_t>(casterOwner);
+  }
 };
 
 struct SceneShadows {

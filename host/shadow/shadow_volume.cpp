@@ -45,22 +45,28 @@ bool planeNormal(const Vec3& u, const Vec3& v, Vec3& normal) {
 
 class PenumbraPlanes {
  public:
+  // The generators x − s (occluder vertex minus source vertex) and their leak bounds, once:
+  // every candidate normal is tested against all of them.
   PenumbraPlanes(const ConvexSet& source, const ConvexSet& occluder, const Tolerance& tolerance)
-      : source_(source), occluder_(occluder), tolerance_(tolerance) {}
-
-  // Keeps n·P <= max over the occluder of n·x when that half-space holds V + cone(V − S): every
-  // generator x − s (occluder vertex minus source vertex) must satisfy n·(x − s) <= 0. Pairs
-  // closer than the length tolerance are one point (an occluder touching the source), and give
-  // no direction. Otherwise the test is relative to the generator's length, so that a plane is
-  // never accepted whose leak along a generator exceeds kRelativeGeometry per metre travelled.
-  void tryNormal(const Vec3& n) {
+      : source_(source), occluder_(occluder) {
     for (const Vec3& x : occluder_.vertices)
       for (const Vec3& s : source_.vertices) {
         const Vec3 d = x - s;
         const double length = d.norm();
-        if (length <= tolerance_.length) continue;
-        if (n.dot(d) > Tolerance::kRelativeGeometry * length) return;
+        if (length <= tolerance.length) continue;
+        generators_.push_back(d);
+        leaks_.push_back(Tolerance::kRelativeGeometry * length);
       }
+  }
+
+  // Keeps n·P <= max over the occluder of n·x when that half-space holds V + cone(V − S): every
+  // generator x − s must satisfy n·(x − s) <= 0. Pairs closer than the length tolerance are one
+  // point (an occluder touching the source), and give no direction. Otherwise the test is
+  // relative to the generator's length, so that a plane is never accepted whose leak along a
+  // generator exceeds kRelativeGeometry per metre travelled.
+  void tryNormal(const Vec3& n) {
+    for (std::size_t g = 0; g < generators_.size(); ++g)
+      if (n.dot(generators_[g]) > leaks_[g]) return;
     double offset = -std::numeric_limits<double>::infinity();
     for (const Vec3& x : occluder_.vertices) offset = std::max(offset, n.dot(x));
     planes_.push_back(Plane{n, offset});
@@ -96,7 +102,8 @@ class PenumbraPlanes {
  private:
   const ConvexSet& source_;
   const ConvexSet& occluder_;
-  Tolerance tolerance_;
+  std::vector<Vec3> generators_;
+  std::vector<double> leaks_;
   std::vector<Plane> planes_;
 };
 
