@@ -5,8 +5,12 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include <nlohmann/json.hpp>
 
@@ -184,6 +188,46 @@ TEST(LuminaireMaintenance, TheTableAndTheSummarySayWhatEIncludes) {
   EXPECT_EQ(eachSummary, "direct only, maintained (MF per luminaire: light-1 0.8, light-2 0.9)");
   EXPECT_LT(eachAvg, 0.9 * newAvg);
   EXPECT_GT(eachAvg, 0.8 * newAvg);
+}
+
+// --ugr-table prints the two tables (S = 0.25H and 1.0H) and -o writes them as one CSV: 2 x 19
+// rows, whose cells are the printed ones to the printed digit.
+TEST(LuminaireCommand, UgrTableIsPrintedAndWrittenAsCsv) {
+  TempDir dir("luminaire-cli");
+  const Result r =
+      runPenumbra(dir.path(), "luminaire '" + (kExamples / "lambertian-panel.ldt").string() +
+                                  "' --ugr-table -o ugr");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "UGR [-] table, S = 0.25H, H = 2.00 m (CIE 190:2010 tabular"));
+  EXPECT_TRUE(contains(r.out, "UGR [-] table, S = 1.00H"));
+  EXPECT_TRUE(contains(r.out, "for a flux Phi add 8 log10(Phi/Phi0)"));
+  std::ifstream in(dir.path() / "ugr" / "lambertian-panel-ugr-table.csv");
+  ASSERT_TRUE(in) << r.out;
+  std::string header, first;
+  std::getline(in, header);
+  std::getline(in, first);
+  EXPECT_EQ(header.substr(0, 62), "S_over_H,X_H,Y_H,X_m,Y_m,luminaires,UGR_crosswise_70_50_20,UGR");
+  int rows = 1;
+  for (std::string line; std::getline(in, line);) ++rows;
+  EXPECT_EQ(rows, 38);
+  // 0.25,2,2,4,4,64,<UGR crosswise 70/50/20>,... against the printed "2H    2H    <UGR>".
+  std::vector<std::string> cells;
+  std::stringstream fields(first);
+  for (std::string cell; std::getline(fields, cell, ',');) cells.push_back(cell);
+  ASSERT_GE(cells.size(), 7u);
+  EXPECT_EQ(cells[5], "64");  // (4 m / 0.5 m)²
+  const std::string printed = fmt::format("  2H    2H        {:>6.1f}", std::stod(cells[6]));
+  EXPECT_TRUE(contains(r.out, printed)) << printed << "\n" << r.out;
+}
+
+TEST(LuminaireCommand, UgrTableOfAFileWithoutLuminousAreaIsRefused) {
+  TempDir dir("luminaire-cli");
+  std::ofstream(dir.path() / "point.ies")
+      << "IESNA:LM-63-2002\n[TEST] x\nTILT=NONE\n1 1000 1 3 1 1 2 0 0 0\n1 1 10\n0 45 90\n0\n"
+         "100 70 0\n";
+  const Result r = runPenumbra(dir.path(), "luminaire point.ies --ugr-table");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "point.ies: no luminous area to rate")) << r.err;
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -80,6 +81,32 @@ TEST_F(SweepRunner, RerunsSkipFinishedCasesAndRecomputeChangedOnes) {
   EXPECT_EQ(changed.computed, 6u);
   EXPECT_EQ(changed.recomputed, 6u);
   EXPECT_NE(readText(out("results.csv")), table);
+}
+
+// A scene with observers gets UGR_max per case. UGR grows as 8 log₁₀ of the flux (L² ∝ Φ², the
+// interreflected L_b ∝ Φ), so doubling the panel's flux adds 8 log₁₀ 2; a scene without observers
+// has no such column (the other tests' tables).
+TEST_F(SweepRunner, ScenesWithObserversGetUgrMax) {
+  std::string scene = kParameterisedRoom;
+  scene.replace(scene.find("room: {size: [3, \"${y + 1}\", 3]}"), 32,
+                "materials: {paint: 0.6}\nroom: {size: [3, \"${y + 1}\", 3], materials: {floor: "
+                "paint, ceiling: paint, walls: paint}}");
+  write(dir_.path() / "scene.yaml",
+        scene + "observers:\n  - {name: desk, eye: [1.5, 0.1, 1.6], look: [0, 1, 0]}\n");
+  write(dir_.path() / "study.yaml",
+        "penumbra-study: 1\nscene: scene.yaml\nparameters:\n  flux: [1000, 2000]\n  y: [2]\n");
+  const SweepSummary summary = run();
+  ASSERT_EQ(summary.table.rows, 2u);
+  std::ifstream in(out("results.csv"));
+  std::string header, first, second;
+  std::getline(in, header);
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_EQ(header.substr(header.rfind(',') + 1), "UGR_max");
+  const double ugr1000 = std::stod(first.substr(first.rfind(',') + 1));
+  const double ugr2000 = std::stod(second.substr(second.rfind(',') + 1));
+  EXPECT_NEAR(ugr2000 - ugr1000, 8 * std::log10(2.0), 1e-4);
+  EXPECT_GT(ugr1000, 0.0);
 }
 
 TEST_F(SweepRunner, ResumeNeedsARunOfTheSameStudy) {

@@ -228,29 +228,38 @@ void addMarker(vtkRenderer* renderer, const PlotLayout& layout, const V2& at, bo
   renderer->AddActor2D(textAt(text, {at.x() + dx, at.y()}, label));
 }
 
+// " lx" after a reading, nothing for a quantity without a unit.
+std::string unitSuffix(const FieldQuantity& q) {
+  return q.unit.empty() ? "" : " " + q.unit;
+}
+
 void addTitle(vtkRenderer* renderer, const PlotLayout& layout, const PlanarField& field,
-              const GridMetrics& m, const std::string& subtitle) {
+              const GridMetrics& m, const HeatMapStyle& style) {
   const double x = layout.left;
   double y = layout.height - layout.scaled(20);
   TextStyle title;
   title.size = layout.scaled(26);
   title.bold = true;
   title.vertical = Align::End;
-  renderer->AddActor2D(textAt(fmt::format("{}: illuminance E", field.name), {x, y}, title));
+  renderer->AddActor2D(
+      textAt(fmt::format("{}: {}", field.name, style.quantity.title), {x, y}, title));
   y -= layout.scaled(38);
   TextStyle metrics = title;
   metrics.size = layout.scaled(21);
   metrics.bold = false;
-  renderer->AddActor2D(textAt(
-      fmt::format("Eavg {} lx    Emin {} lx    Emax {} lx    U0 = Emin/Eavg {:.3f}    "
-                  "Ud = Emin/Emax {:.3f}",
-                  formatReading(m.eAvg), formatReading(m.eMin), formatReading(m.eMax), m.u0, m.ud),
-      {x, y}, metrics));
+  const std::string line =
+      !style.quantity.metricsLine.empty()
+          ? style.quantity.metricsLine
+          : fmt::format(
+                "Eavg {} lx    Emin {} lx    Emax {} lx    U0 = Emin/Eavg {:.3f}    "
+                "Ud = Emin/Emax {:.3f}",
+                formatReading(m.eAvg), formatReading(m.eMin), formatReading(m.eMax), m.u0, m.ud);
+  renderer->AddActor2D(textAt(line, {x, y}, metrics));
   y -= layout.scaled(32);
   TextStyle note = metrics;
   note.size = layout.scaled(16);
   note.colour = kSubtle;
-  renderer->AddActor2D(textAt(subtitle, {x, y}, note));
+  renderer->AddActor2D(textAt(style.subtitle, {x, y}, note));
 }
 
 }  // namespace
@@ -306,25 +315,29 @@ HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, 
   levelStyle.vertical = Align::Centre;
   levelStyle.box = true;
   for (const IsoluxLabel& label : placeIsoluxLabels(figure.isolux, layout, markers)) {
-    renderer->AddActor2D(
-        textAt(formatTick(label.level, label.level) + " lx", label.pixel, levelStyle));
+    renderer->AddActor2D(textAt(style.quantity.levelPrefix + formatTick(label.level, label.level) +
+                                    unitSuffix(style.quantity),
+                                label.pixel, levelStyle));
   }
   if (extremes.eMax >= 0) {
-    addMarker(renderer, layout, markers[1], false,
-              "Emin " + formatReading(field.illuminance[extremes.eMin]) + " lx");
-    addMarker(renderer, layout, markers[0], true,
-              "Emax " + formatReading(field.illuminance[extremes.eMax]) + " lx");
+    const FieldQuantity& q = style.quantity;
+    addMarker(
+        renderer, layout, markers[1], false,
+        q.extremeLabel + "min " + formatReading(field.illuminance[extremes.eMin]) + unitSuffix(q));
+    addMarker(
+        renderer, layout, markers[0], true,
+        q.extremeLabel + "max " + formatReading(field.illuminance[extremes.eMax]) + unitSuffix(q));
   }
 
   addPlotAxes(renderer, layout, field.plot.sLabel, field.plot.tLabel);
-  addTitle(renderer, layout, field, metrics, style.subtitle);
+  addTitle(renderer, layout, field, metrics, style);
   LegendPlacement& legend = figure.legend;
   legend.fontScale = f;
   legend.x = layout.width - 230 * f;
   legend.y = std::max(layout.bottom, keyTop + 36 * f);
   legend.width = 30 * f;
   legend.height = std::max(layout.plotHeight() - 80 * f - (legend.y - layout.bottom), 200 * f);
-  addColourLegend(renderer, style.scale, legend, "Illuminance E [lx]", style.isolux);
+  addColourLegend(renderer, style.scale, legend, style.quantity.legendTitle, style.isolux);
 
   placeCamera(renderer, layout);
   renderToPng(renderer, layout.width, layout.height, png);

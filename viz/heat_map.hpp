@@ -1,8 +1,9 @@
 #pragma once
-// The heat map of a planar grid: illuminance in false colour over the calculation area, isolux
-// lines with their values, the room outline, the solids the plane cuts (filled, outlined) and
-// the footprints of those wholly above it over the calculation area (dashed: desk tops, shelves
-// over a work plane), Emin and Emax marked, the metrics in the title and a legend with units.
+// The heat map of a planar grid: illuminance (or another field, FieldQuantity) in false colour
+// over the calculation area, isolux lines with their values, the room outline, the solids the
+// plane cuts (filled, outlined) and the footprints of those wholly above it over the calculation
+// area (dashed: desk tops, shelves over a work plane), Emin and Emax marked, the metrics in the
+// title and a legend with units.
 #include <filesystem>
 #include <string>
 #include <utility>
@@ -21,8 +22,20 @@
 
 namespace penumbra::viz {
 
+// What the field's values are, for the title, the markers, the lines' labels and the legend. The
+// default is illuminance; a UGR map (ugr_map.hpp) draws UGR, which has no unit.
+struct FieldQuantity {
+  std::string title = "illuminance E";  // after "<grid>: "
+  std::string extremeLabel = "E";       // "Emin ...", "Emax ..."
+  std::string unit = "lx";              // after readings and line levels; "" for none
+  std::string levelPrefix;              // before a line's level ("UGR_L ")
+  std::string legendTitle = "Illuminance E [lx]";
+  std::string metricsLine;  // under the title; empty: the illuminance metrics of the grid
+};
+
 struct HeatMapStyle {
   ColourScale scale;
+  FieldQuantity quantity;
   std::vector<double> isolux;  // lx; empty: no lines
   int width = 1600;            // px
   std::string subtitle;        // the line under the metrics (scene, spacing, plane)

@@ -26,6 +26,8 @@ int worldAxisOf(const Vec3& direction) {
   return -1;
 }
 
+}  // namespace
+
 PlotPlane plotPlaneFor(const PlanarField& f) {
   static constexpr std::array<const char*, 3> kNames{"x [m]", "y [m]", "z [m]"};
   PlotPlane plane;
@@ -47,6 +49,8 @@ PlotPlane plotPlaneFor(const PlanarField& f) {
   plane.tLabel = "v [m]";
   return plane;
 }
+
+namespace {
 
 // A unit vector perpendicular to n.
 Vec3 perpendicular(const Vec3& n) {

@@ -46,6 +46,9 @@ struct PlanarField {
   Eigen::Vector2d gridAt(const Eigen::Vector2d& st) const;
 };
 
+// The picture's axes for `field` (its lattice set): world axes when the grid runs along them.
+PlotPlane plotPlaneFor(const PlanarField& field);
+
 // Throws std::invalid_argument when the grid is not planar or its points are not a lattice.
 PlanarField planarField(const GridReport& grid);
 

@@ -122,6 +122,12 @@ CLI::App* addPlotCommand(CLI::App& app, PlotOptions& options) {
                    "OpenCL device for E on the room's surfaces: auto, cpu, gpu, or an index from "
                    "`penumbra devices`")
       ->capture_default_str();
+  command
+      ->add_option("--ugr-limit", options.ugrLimit,
+                   "On the folder of `penumbra glare`: the EN 12464-1 limit UGR_L drawn on the UGR "
+                   "maps (16, 19, 22, 25, 28)")
+      ->capture_default_str()
+      ->check(CLI::Range(5.0, 40.0));
   command->add_flag("-q,--quiet", options.quiet, "No progress and no list of files; errors only");
   return command;
 }

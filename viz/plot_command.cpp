@@ -18,6 +18,7 @@
 #include "viz/plot_files.hpp"
 #include "viz/plot_pictures.hpp"
 #include "viz/render_png.hpp"
+#include "viz/ugr_map.hpp"
 
 namespace penumbra::viz {
 
@@ -36,10 +37,51 @@ void checkOptions(const PlotOptions& options) {
   }
 }
 
+// The folder of `penumbra glare`: one UGR map per observer grid.
+int runUgrMaps(const PlotOptions& options, const nlohmann::json& summary) {
+  const auto start = Clock::now();
+  const fs::path sceneFile = summary.at("scene").get<std::string>();
+  if (!fs::exists(sceneFile)) {
+    throw std::runtime_error(
+        fmt::format("the scene of this run, {}, is not there any more", sceneFile.string()));
+  }
+  const Scene scene = loadScene(sceneFile);
+  const std::vector<UgrGrid> grids = ugrGrids(summary);
+  if (grids.empty()) {
+    throw std::runtime_error(fmt::format(
+        "{} has no observer grid of at least 2 x 2 eyes to map (single eyes are in the CSVs)",
+        options.folder.string()));
+  }
+  StagedDirectory staged(options.folder);
+  std::vector<std::string> written;
+  for (const UgrGrid& grid : grids) {
+    const std::string name = ugrMapFileName(grid.entry);
+    const std::string subtitle = fmt::format(
+        "{} · eyes at {:.2f} m · {} × {} eyes, {:.3g} m × {:.3g} m apart · {}",
+        sceneFile.filename().string(), grid.field.first.z(), grid.field.columns, grid.field.rows,
+        grid.field.uStep.norm(), grid.field.vStep.norm(), summary.value("background", ""));
+    const HeatMapFigure figure =
+        drawUgrMap(grid, scene, options.ugrLimit, options.width, subtitle, staged.staging() / name);
+    written.push_back(
+        fmt::format("{} ({} × {} px)", name, figure.layout.width, figure.layout.height));
+  }
+  staged.commit();
+  if (!options.quiet) {
+    for (const std::string& file : written) fmt::print("{}\n", file);
+    fmt::print("plots in {} ({:.1f} s)\n", normalizedTarget(options.folder).string(),
+               std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  return 0;
+}
+
 int run(const PlotOptions& options) {
   const auto start = Clock::now();
   checkOptions(options);
   requireDisplay();
+  if (const nlohmann::json summary = readSummary(options.folder / "summary.json");
+      summary.contains("observers")) {
+    return runUgrMaps(options, summary);
+  }
   const RunReport results = readResults(options.folder);
   if (!fs::exists(results.sceneFile)) {
     throw std::runtime_error(fmt::format("the scene of this run, {}, is not there any more",

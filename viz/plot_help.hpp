@@ -4,7 +4,8 @@
 namespace penumbra::viz::help {
 
 inline constexpr const char* kPlot =
-    "Draw the results of a `penumbra grid` run: a heat map with isolux lines per planar grid, "
+    "Draw the results of a `penumbra grid` run (or the UGR maps of a `penumbra glare` run): a "
+    "heat map with isolux lines per planar grid, "
     "the room's surfaces in false colour, and the data as VTK files for ParaView. Illuminance E "
     "in lux (lx), lengths in metres (m).";
 
@@ -26,6 +27,9 @@ inline constexpr const char* kPlotFooter =
     "                NaN without a material), Normals; cells carry the solid and face index\n"
     "  surfaces.png  the room seen from above one corner, in false colour; the ceiling and the\n"
     "                two walls nearest the camera are left out of the picture (not of the file)\n"
+    "  <entry>-ugr.png  on the folder of `penumbra glare`, per observer grid: each eye's UGR_max\n"
+    "                (CIE 117, over its lines of sight) in false colour, UGR [-], the EN 12464-1\n"
+    "                limit --ugr-limit (default 19) as an isoline\n"
     "\n"
     "Legend: linear from 0 lx to a round value at or above Emax; --range fixes it, so that\n"
     "variants plotted with the same range compare colour for colour; --log makes it\n"

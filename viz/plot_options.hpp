@@ -31,6 +31,7 @@ struct PlotOptions {
   double surfaceSpacing = 0.0;  // m between samples on room surfaces; 0: from the scene's size
   int isobands = 0;             // > 0: also <grid>.svg, iso-bands of E (about this many bands)
   std::string device = "auto";  // OpenCL device for the surfaces' illuminance
+  double ugrLimit = 19.0;       // UGR maps (a glare folder): the EN 12464-1 limit drawn
   bool quiet = false;
 };
 

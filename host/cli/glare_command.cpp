@@ -43,11 +43,7 @@ int run(const GlareOptions& options) {
     estimator.emplace(estimatorOptions, scene);
     run.device = estimator->device();
     indirect = [&](std::span<const SamplePoint> points) {
-      const PointIlluminance e = estimator->illuminance(points);
-      std::vector<double> interreflected(points.size(), 0.0);
-      for (std::size_t i = 0; i < points.size() && !e.direct.empty(); ++i)
-        interreflected[i] = e.total[i] - e.direct[i];
-      return interreflected;
+      return estimator->interreflected(points);
     };
   } else {
     run.device = "none (direct light only)";

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "glare/ugr_table.hpp"
+#include "output/ugr_table_files.hpp"
 #include "photometry/photometric_error.hpp"
 #include "photometry/photometric_file.hpp"
 #include "photometry/zonal_flux.hpp"
@@ -105,12 +107,49 @@ std::string describeLuminaire(const std::filesystem::path& file, const Photometr
   return text;
 }
 
+namespace {
+
+// The tables at S = 0.25H (DIALux's) and 1.0H (CIE 190's standard condition), printed and, with
+// -o, written as CSV.
+int printUgrTables(const LuminaireOptions& options, const PhotometricData& data,
+                   const LightDistribution& distribution) {
+  const TabularLuminaire luminaire = tabularLuminaire(distribution, data.opening);
+  if (!(luminaire.areaM2 > 0.0)) {
+    fmt::print(stderr,
+               "{}: no luminous area to rate (opening: {}): the UGR table needs L = I/A_p, so "
+               "the file must state a rectangle (with or without luminous sides), a disk or an "
+               "ellipse\n",
+               options.file.string(), openingLine(data.opening));
+    return 1;
+  }
+  std::vector<UgrTable> tables;
+  for (double spacing : {0.25, 1.0}) {
+    tables.push_back(computeUgrTable(luminaire, UgrTableSettings{spacing, kStandardHeightM}));
+    fmt::print("\n{}", ugrTableText(tables.back()));
+  }
+  if (!options.outputDirectory.empty()) {
+    const std::filesystem::path csv =
+        options.outputDirectory / (options.file.stem().string() + "-ugr-table.csv");
+    try {
+      std::filesystem::create_directories(options.outputDirectory);
+      writeUgrTableCsv(tables, csv);
+    } catch (const std::exception& e) {
+      fmt::print(stderr, "{}: {}\n", csv.string(), e.what());
+      return 1;
+    }
+    fmt::print("\nwrote {}\n", csv.string());
+  }
+  return 0;
+}
+
+}  // namespace
+
 int runLuminaireCommand(const LuminaireOptions& options) {
   try {
     const PhotometricData data = readPhotometricFile(options.file);
     const LightDistribution distribution(data);
     fmt::print("{}", describeLuminaire(options.file, data, distribution));
-    return 0;
+    return options.ugrTable ? printUgrTables(options, data, distribution) : 0;
   } catch (const PhotometricError& e) {
     fmt::print(stderr, "{}\n", e.what());
     return e.line() > 0 ? 2 : 1;

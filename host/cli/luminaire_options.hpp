@@ -13,6 +13,10 @@ inline CLI::App* addLuminaireCommand(CLI::App& app, LuminaireOptions& options) {
   command->footer(help::kLuminaireFooter);
   command->add_option("file", options.file, "Photometric file: .ies (IES LM-63) or .ldt (EULUMDAT)")
       ->required();
+  command->add_flag("--ugr-table", options.ugrTable,
+                    "Print the CIE 190 UGR table of the luminaire (S = 0.25H and 1.0H, H = 2 m)");
+  command->add_option("-o,--output", options.outputDirectory,
+                      "With --ugr-table: write <file stem>-ugr-table.csv into this directory");
   return command;
 }
 

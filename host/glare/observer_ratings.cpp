@@ -15,6 +15,15 @@ std::optional<double> ObserverRating::ugrMax() const {
   return highest;
 }
 
+std::optional<double> highestUgr(const std::vector<ObserverRating>& ratings) {
+  std::optional<double> highest;
+  for (const ObserverRating& rating : ratings) {
+    const std::optional<double> max = rating.ugrMax();
+    if (max && (!highest || *max > *highest)) highest = max;
+  }
+  return highest;
+}
+
 std::vector<SamplePoint> backgroundPoints(const Observer& observer) {
   std::vector<SamplePoint> points;
   for (const Vec3& look : observer.looks) points.push_back(SamplePoint{observer.eye, look, -1});

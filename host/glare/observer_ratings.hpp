@@ -23,6 +23,9 @@ struct ObserverRating {
   std::optional<double> ugrMax() const;
 };
 
+// The largest UGR over every observer and line of sight; nothing when none has one.
+std::optional<double> highestUgr(const std::vector<ObserverRating>& ratings);
+
 // The eye's points, one per line of sight, each facing along it: where L_b is measured.
 std::vector<SamplePoint> backgroundPoints(const Observer& observer);
 

@@ -66,6 +66,11 @@ PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
   return e;
 }
 
+std::vector<double> Estimator::interreflected(std::span<const SamplePoint> points) {
+  if (!interreflection_) return std::vector<double>(points.size(), 0.0);
+  return interreflection_->indirect(points);
+}
+
 std::vector<double> Estimator::daylightReference(const Scene& scene,
                                                  std::span<const SamplePoint> points) const {
   return estimateByGroup(scene, points, [&](const Scene& lit, std::span<const SamplePoint> p) {

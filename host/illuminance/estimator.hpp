@@ -58,6 +58,8 @@ class Estimator {
 
   // E at every point: the total, with its direct part when interreflection is on.
   PointIlluminance illuminance(std::span<const SamplePoint> points);
+  // The interreflected part of E alone (lx); zeros when the run is direct light only.
+  std::vector<double> interreflected(std::span<const SamplePoint> points);
   // The same as the callable that evaluateGrid takes.
   IlluminanceEstimator function();
 

@@ -119,13 +119,12 @@ nlohmann::json viewJson(const GlareRating& view, bool interreflection) {
 
 nlohmann::json summaryJson(const GlareRun& run) {
   nlohmann::json observers = nlohmann::json::array();
-  std::optional<double> highest;
+  const std::optional<double> highest = highestUgr(run.ratings);
   for (const ObserverRating& rating : run.ratings) {
     nlohmann::json views = nlohmann::json::array();
     for (const GlareRating& view : rating.views)
       views.push_back(viewJson(view, run.interreflection));
     const std::optional<double> max = rating.ugrMax();
-    if (max && (!highest || *max > *highest)) highest = max;
     const Vec3& eye = rating.observer->eye;
     observers.push_back({{"name", rating.observer->name},
                          {"entry", rating.observer->entry},

@@ -56,19 +56,6 @@ double numberOrNaN(const nlohmann::json& value) {
   return value.is_number() ? value.get<double>() : std::numeric_limits<double>::quiet_NaN();
 }
 
-nlohmann::json readSummary(const fs::path& file) {
-  std::ifstream in(file);
-  if (!in) {
-    throw std::runtime_error(fmt::format(
-        "{}: no summary.json: is this the output directory of `penumbra grid`?", file.string()));
-  }
-  try {
-    return nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
-  }
-}
-
 // summary.json's "parameters": the values the scene's parameters had in the run (defaults or
 // --set). Runs written before parameters existed have none: the scene then loads with its
 // defaults, which is what those runs used.
@@ -126,6 +113,19 @@ GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
 }
 
 }  // namespace
+
+nlohmann::json readSummary(const fs::path& file) {
+  std::ifstream in(file);
+  if (!in) {
+    throw std::runtime_error(fmt::format(
+        "{}: no summary.json: is this the output directory of `penumbra grid`?", file.string()));
+  }
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(fmt::format("{}: {}", file.string(), e.what()));
+  }
+}
 
 void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
   std::string line;

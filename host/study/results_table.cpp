@@ -58,6 +58,9 @@ Table buildTable(const StudyLayout& layout, const std::vector<CaseRecord>& recor
       table.header.push_back(prefix.metric + metricColumn(layout, m, grid));
     }
   }
+  const bool rated =
+      std::any_of(records.begin(), records.end(), [](const CaseRecord& r) { return r.rated; });
+  if (rated) table.header.push_back(prefix.metric + kUgrMaxColumn);
   for (const std::string& image : images) table.header.push_back(prefix.image + imageColumn(image));
 
   for (const CaseRecord& r : records) {
@@ -74,6 +77,7 @@ Table buildTable(const StudyLayout& layout, const std::vector<CaseRecord>& recor
         row.push_back(result != nullptr ? number(metricValue(result->metrics, m)) : std::string());
       }
     }
+    if (rated) row.push_back(r.ugrMax ? number(*r.ugrMax) : std::string());
     for (const std::string& image : images) {
       const bool has = std::find(r.images.begin(), r.images.end(), image) != r.images.end();
       row.push_back(has ? (std::filesystem::path(kCasesFolder) / r.id / image).generic_string()

@@ -2,7 +2,10 @@
 // The tables of a sweep, built from the finished cases' records:
 //  results.csv          case_id, every parameter, every metric with its unit in the header
 //                       (Eavg_lx, ..., U0, Ud; "Eavg_lx@<grid>" when the study has several
-//                       grids), and the relative path of each case image ("<image>_png")
+//                       grids), UGR_max when the scene has observers (CIE 117 UGR, the
+//                       largest over its observers and lines of sight, L_b from the
+//                       interreflection: docs/glare.md), and the relative path of each case
+//                       image ("<image>_png")
 //  design-explorer.csv  the same as in:<parameter>, out:<metric>, img:<image> columns, the form
 //                       Design Explorer (and similar tools) read
 #include <string>
@@ -11,6 +14,9 @@
 #include "study/study_layout.hpp"
 
 namespace penumbra {
+
+// The column of the largest UGR of a case whose scene has observers.
+inline constexpr const char* kUgrMaxColumn = "UGR_max";
 
 struct Table {
   std::vector<std::string> header;

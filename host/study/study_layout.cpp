@@ -123,11 +123,13 @@ OrderedJson caseJson(const CaseRecord& record) {
     }
     grids.push_back(grid);
   }
-  return {{"id", record.id},
-          {"fingerprint", record.fingerprint},
-          {"parameters", valuesJson(record.values)},
-          {"grids", grids},
-          {"images", record.images}};
+  OrderedJson json = {{"id", record.id},
+                      {"fingerprint", record.fingerprint},
+                      {"parameters", valuesJson(record.values)},
+                      {"grids", grids},
+                      {"images", record.images}};
+  if (record.rated) json["UGR_max"] = record.ugrMax ? OrderedJson(*record.ugrMax) : OrderedJson();
+  return json;
 }
 
 CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& file) {
@@ -152,6 +154,10 @@ CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& fil
       record.grids.push_back(grid);
     }
     record.images = json.at("images").get<std::vector<std::string>>();
+    if (const auto ugr = json.find("UGR_max"); ugr != json.end()) {
+      record.rated = true;
+      if (!ugr->is_null()) record.ugrMax = ugr->get<double>();
+    }
     return record;
   });
 }

@@ -49,6 +49,10 @@ struct CaseRecord {
   ParameterValues values;
   std::vector<CaseGridResult> grids;
   std::vector<std::string> images;  // relative to the case folder
+  // For a scene with observers: the largest UGR over its observers and lines of sight (nothing
+  // when none has one, docs/glare.md); `rated` false for a scene without observers.
+  bool rated = false;
+  std::optional<double> ugrMax;
 };
 
 nlohmann::ordered_json layoutJson(const StudyLayout& layout);

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "glare/observer_ratings.hpp"
 #include "grid/scene_grids.hpp"
 #include "output/result_files.hpp"
 #include "output/staged_directory.hpp"
@@ -186,10 +187,17 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     report.grids = evaluateGrids(*scene, selectGrids(*scene, layout.grids), *estimator);
     report.totalSeconds = secondsSince(start);
 
-    CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
+    CaseRecord record{c->id, c->fingerprint, c->values, {}, {}, false, std::nullopt};
     for (const GridReport& g : report.grids) {
       record.grids.push_back(
           {g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report))});
+    }
+    if (!scene->observers.empty()) {
+      // UGR_max over the observers (docs/glare.md): L_b from the case's interreflection.
+      record.rated = true;
+      record.ugrMax = highestUgr(rateObservers(*scene, [&](std::span<const SamplePoint> points) {
+        return estimator->interreflected(points);
+      }));
     }
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
     writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
