@@ -28,8 +28,9 @@ struct DegenerateCase {
 class DegenerateGenerator {
  public:
   // The thickness of the "thin" boxes: 1 cm holds the stress criterion; thinner ones approach
-  // the kernel's float tolerance (Tolerance::kKernelRelative × scene size, about 0.05 mm here)
-  // and are a known limit (docs/reliability.md), explored with `degenerate_stress --thin`.
+  // the kernel's length tolerance (Tolerance::kernelLength: 1e-6 of the distance from the
+  // scene's centre, a few µm here) and are explored with `degenerate_stress --thin`
+  // (docs/reliability.md).
   static constexpr double kThinBox = 1e-2;  // m
 
   explicit DegenerateGenerator(std::uint64_t seed, double thin = kThinBox)

@@ -10,7 +10,7 @@
 // adds rooms: a point's own room looks the same whatever the floor's size, and every other
 // room's panels, windows and furniture are behind a wall.
 // Every piece is at least 60 mm thick: 16 offices make a 50 m scene, whose float kernels shade
-// solids from 50 mm (scene_loader.cpp, 1/1000 of the scene's size).
+// solids from 2.5 mm at its ends (scene_loader.cpp, Tolerance::minimumThickness).
 #include <fmt/format.h>
 
 #include <algorithm>

@@ -13,7 +13,7 @@ typedef struct {
 } ApertureView8;
 
 inline ApertureView8 aperture_view8(float8 px, float8 py, float8 pz, PnSourceFace face,
-                                    PnAperture ap, float eps_length) {
+                                    PnAperture ap, float8 eps_length) {
   ApertureView8 v;
   float8 ha = plane_height8(ap.plane, px, py, pz);
   float8 hs = plane_height8(face.plane, px, py, pz);
@@ -67,7 +67,7 @@ inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane,
  * the same in v), hS the face's depth. */
 inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8 v, PnAperture ap,
                                   float4 n, PnOccluder o, const PnSceneTables* tables,
-                                  float eps_length) {
+                                  float8 eps_length) {
   float8 hs = -v.depth, margin = eps_length * hs;
   int8 u0 = -1, u1 = -1, v0 = -1, v1 = -1;
   for (int k = 0; k < o.vertexCount; ++k) {

@@ -35,15 +35,18 @@ __kernel void illuminance(
                                 edges, occluder_vertices, apertures,  patch_faces, candidates};
   const bool culling = (params.paths & PN_PATH_CULLING) != 0;
   const bool lanes_path = culling && (params.paths & PN_PATH_LANES) != 0;
-  const float eps_length = params.epsLength;
   const size_t g = get_global_id(0);
   float8 px = vload8(g, point_x), py = vload8(g, point_y), pz = vload8(g, point_z);
+  /* Each point's own length tolerance: float's resolution where it lies (prelude.cl). */
+  const float8 eps_length = length_tolerance8(params.epsLength, px, py, pz);
   float8 nx = vload8(g, normal_x), ny = vload8(g, normal_y), nz = vload8(g, normal_z);
   int8 own = vload8(g, point_solid);
   const Points8 points = {px, py, pz, nx, ny, nz, own};
   float lane_px[PN_LANES], lane_py[PN_LANES], lane_pz[PN_LANES];
   float lane_nx[PN_LANES], lane_ny[PN_LANES], lane_nz[PN_LANES];
   int lane_own[PN_LANES];
+  float lane_eps[PN_LANES];
+  vstore8(eps_length, 0, lane_eps);
   vstore8(px, 0, lane_px);
   vstore8(py, 0, lane_py);
   vstore8(pz, 0, lane_pz);
@@ -138,7 +141,7 @@ __kernel void illuminance(
           if (lane_ap[l])
             for (int i = 0; i < 4; ++i)
               corners[i] = (float3)(lane_cx[i][l], lane_cy[i][l], lane_cz[i][l]);
-          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, culling, &tables, eps_length,
+          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, culling, &tables, lane_eps[l],
                                     lane_ap[l] != 0, corners, &error);
         }
         e_face = vload8(0, lane_e);

@@ -39,8 +39,12 @@ __kernel void luminaire_illuminance(const PnLuminaireParams params, __global con
       continue;
     }
     const float cos_theta = dot(n, w) / sqrt(d2);
-    const bool lit = cos_theta > 0.0f && !pn_point_shaded(solids, params.solidCount, solid_planes,
-                                                          own, p, lum.centre.xyz, params.epsLength);
+    /* The segment's points are no farther from the origin than its ends: their tolerance. */
+    const float3 c = lum.centre.xyz;
+    const float eps = fmax(length_tolerance1(params.epsLength, p.x, p.y, p.z),
+                           length_tolerance1(params.epsLength, c.x, c.y, c.z));
+    const bool lit = cos_theta > 0.0f &&
+                     !pn_point_shaded(solids, params.solidCount, solid_planes, own, p, c, eps);
     seen[l * params.pointStride + i] = lit ? 1 : 0;
     if (!lit) continue;
     const float3 away = -w; /* from the centre towards the point */

@@ -20,23 +20,23 @@
  * Both volumes err on the safe side: the penumbra path decides. */
 #define PN_DEFINE_OCCLUDER_TESTS(T, M, S)                                                        \
   inline M face_sees##S(PnOccluder o, int j, const PnSceneTables* tables, T px, T py, T pz,      \
-                        float eps_length) {                                                      \
+                        T eps_length) {                                                          \
     return plane_height##S(tables->planes[o.firstPlane + j], px, py, pz) > eps_length;           \
   }                                                                                              \
   inline M not_separated##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,         \
-                            float eps_length, M lanes) {                                         \
+                            T eps_length, M lanes) {                                             \
     for (int j = 0; j < o.separatingCount && pn_any(lanes); ++j)                                 \
       lanes &= plane_height##S(tables->planes[o.firstSeparating + j], px, py, pz) < -eps_length; \
     return lanes;                                                                                \
   }                                                                                              \
   inline M in_penumbra_volume##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,    \
-                                 float eps_length, M lanes) {                                    \
+                                 T eps_length, M lanes) {                                        \
     for (int j = 0; j < o.penumbraCount && pn_any(lanes); ++j)                                   \
       lanes &= plane_height##S(tables->planes[o.firstPenumbra + j], px, py, pz) <= eps_length;   \
     return lanes;                                                                                \
   }                                                                                              \
   inline M in_umbra_volume##S(PnOccluder o, const PnSceneTables* tables, T px, T py, T pz,       \
-                              float eps_length, M lanes) {                                       \
+                              T eps_length, M lanes) {                                           \
     if (o.umbraCount == 0) return (M)(0);                                                        \
     for (int j = 0; j < o.umbraCount && pn_any(lanes); ++j)                                      \
       lanes &= plane_height##S(tables->planes[o.firstUmbra + j], px, py, pz) < -eps_length;      \
@@ -70,7 +70,7 @@ typedef struct {
 
 ShadowTests shadow_tests8(float8 px, float8 py, float8 pz, int8 own, PnSourceFace face,
                           PnPatchFace pf, bool culling, ApertureView8 view, PnAperture ap,
-                          const PnSceneTables* tables, float eps_length, int8* inside_out) {
+                          const PnSceneTables* tables, float8 eps_length, int8* inside_out) {
   const int8 aperture = view.use;
   ShadowTests tests;
   tests.umbra = 0;

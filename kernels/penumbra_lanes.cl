@@ -98,7 +98,7 @@ inline void bound_cone8(BoundCone8* cone, float8 cx, float8 cy, float8 cz, float
  * contour (a box has 12 edges, 4 to 6 on a contour), hole-oriented. Lanes left out go to *rest
  * (what did not fit) or *scalar (what this path does not take). */
 void gather_occluders8(Contours8* cs, const SourcePolygon8* s, const Points8* pts, int8 lanes,
-                       const FaceView8* fv, const PnSceneTables* tables, float eps_length,
+                       const FaceView8* fv, const PnSceneTables* tables, float8 eps_length,
                        const int8* inside, int8* rest, int8* scalar) {
   const float8 px = pts->px, py = pts->py, pz = pts->pz, nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const PnSourceFace face = fv->face;
@@ -196,7 +196,7 @@ void gather_occluders8(Contours8* cs, const SourcePolygon8* s, const Points8* pt
  * u adds nothing to the union: it covers no edge v does not cover more, and its own edges are
  * covered. Its lanes are dropped; the pieces, and so the sums, are the same without it. */
 void drop_hidden8(Contours8* cs, const Points8* pts, const PnSceneTables* tables,
-                  float eps_length) {
+                  float8 eps_length) {
   const float8 px = pts->px, py = pts->py, pz = pts->pz;
   for (int u = 0; u < cs->count && cs->count > 1; ++u) {
     PnOccluder ou = tables->occluders[cs->occluder[u]];
@@ -295,7 +295,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
  * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
  * those this path cannot take. */
 float8 penumbra_face8(const Points8* pts, int8 asked, const FaceView8* fv,
-                      const PnSceneTables* tables, float eps_length, const int8* inside, int8* rest,
+                      const PnSceneTables* tables, float8 eps_length, const int8* inside, int8* rest,
                       int8* scalar) {
   *rest = 0;
   *scalar = 0;

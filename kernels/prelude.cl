@@ -1,7 +1,8 @@
-/* Shared by every file of the illuminance kernel: the tolerance the host passes, the lane-mask
+/* Shared by every file of the illuminance kernel: the tolerances the host passes, the lane-mask
  * test and the compensated sums.
  *
- * Build options from the host: -DPN_EPS_REL=<Tolerance::kKernelRelative>. */
+ * Build options from the host: -DPN_EPS_REL=<Tolerance::kKernelRelative>,
+ * -DPN_EPS_LENGTH_REL=<Tolerance::kKernelLengthRelative>. */
 
 #include "shared_types.h"
 
@@ -24,6 +25,22 @@ typedef struct {
 #ifndef PN_EPS_REL
 #error "the host passes -DPN_EPS_REL"
 #endif
+#ifndef PN_EPS_LENGTH_REL
+#error "the host passes -DPN_EPS_LENGTH_REL"
+#endif
+
+/* The length tolerance at a point (m; Tolerance::kernelLength): plane heights there are good to a
+ * few roundings of the point's largest coordinate r (positions are relative to the scene's
+ * centre), so the tolerance is PN_EPS_LENGTH_REL · r, and `near` (the host's epsLength, its value
+ * within 1 m of the centre) where that is less. A point, not the scene, sets it: a 10 mm shelf
+ * 50 m from the centre is 200 tolerances thick there, whatever the scene's size. */
+#define PN_DEFINE_LENGTH_TOLERANCE(T, S)                                             \
+  inline T length_tolerance##S(float near, T px, T py, T pz) {                       \
+    return fmax((T)(near), PN_EPS_LENGTH_REL * fmax(fabs(px), fmax(fabs(py), fabs(pz)))); \
+  }
+PN_DEFINE_LENGTH_TOLERANCE(float, 1)
+PN_DEFINE_LENGTH_TOLERANCE(float8, 8)
+#undef PN_DEFINE_LENGTH_TOLERANCE
 
 /* Whether any lane of a mask is set: a comparison's result for one point (int: 0 or 1) or for
  * eight lanes (int8: 0 or -1 each), so that code written once for both types can test it. PoCL's

@@ -112,7 +112,7 @@ typedef struct {
  * buffers are arguments of their own (engine/kernel_scene.hpp binds both in one place). */
 typedef struct {
   pn_int faceCount;    /* source faces in the faces table */
-  float epsLength;     /* the kernel's absolute length tolerance (m) */
+  float epsLength;     /* the length tolerance near the origin (m); at a point, prelude.cl */
   pn_int paths;        /* PN_PATH_* bits; none: the plain path */
   pn_int bySource;     /* 1: E per source, [source][padded point]; 0: E summed per point */
   pn_int sourceStride; /* the padded point count: the row length of per-source outputs */
@@ -184,7 +184,7 @@ typedef struct {
   pn_int pointCount;     /* points in the batch (the buffers may be longer) */
   pn_int luminaireCount; /* placed luminaires */
   pn_int solidCount;
-  float epsLength; /* the kernel's absolute length tolerance (m), as for the illuminance kernel */
+  float epsLength; /* the length tolerance near the origin (m), as for the illuminance kernel */
   pn_int pointStride; /* the row length of the per-luminaire output `seen` */
   pn_int pad1, pad2, pad3;
 } PnLuminaireParams;

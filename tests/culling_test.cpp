@@ -280,8 +280,8 @@ TEST(ShadowClasses, LightsBehindAWallAreUmbraForWholePatches) {
   const std::vector<FaceVolumes> volumes = flattenVolumes(shadows);
   const KernelScene packed = packScene(scene, shadows);
   const std::size_t workItems = (points.size() + PN_LANES - 1) / PN_LANES;
-  const PatchTable table =
-      buildPatchTable(shadows, volumes, packed, points, workItems, true, 2.0 * packed.epsLength);
+  const PatchTable table = buildPatchTable(shadows, volumes, packed, points, workItems, true,
+                                           2.0 * kernelLengthAt(packed, points));
   int umbraEntries = 0, hiddenEntries = 0;
   for (std::size_t f = 0; f < shadows.faces.size(); ++f) {
     const bool hidden =

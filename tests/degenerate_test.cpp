@@ -3,9 +3,11 @@
 // ≥ 0, not above the unoccluded E, within the occlusion criterion of the reference.
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <numbers>
 
 #include "bench/degenerate_check.hpp"
+#include "reference/exact_illuminance.hpp"
 #include "sanitized_build.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"
@@ -104,6 +106,72 @@ TEST(DegenerateGeometry, PointOnASolidsCornerOrEdgeSeesPastItsWedge) {
           << c.what << ", culling " << culling;
     }
   }
+}
+
+// The same configurations in a large scene: a 1 m cube 100 m away along x puts the kernel's
+// origin (the centre of the geometry) about 50 m from them, and the thin boxes are 10 mm thick,
+// 200 of the kernel's length tolerances there (Tolerance::kernelLength: 50 µm). Each point
+// is held to the exact reference (exactIlluminance, double) within the stress criterion, the
+// bound the suite holds the sampled reference to, and, where it lies 5 mm or more from every
+// box (beside a thin box, not on one), within Tolerance::kKernelRelative · E_unoccluded, as at
+// the scene's centre.
+TEST(DegenerateGeometry, ThinBoxesFiftyMetresFromTheCentreAgreeWithTheExactReference) {
+  constexpr std::uint64_t kSeed = 1;
+  constexpr long kConfigurations = 300;
+  const Solid anchor = testing::boxSolid({100.0, 0.0, 0.0}, {101.0, 1.0, 1.0}, "anchor");
+  bench::DegenerateCase first = bench::DegenerateGenerator::make(kSeed, 0);
+  IlluminanceEngine engine(testing::cpuDevice(), first.scene);
+  IlluminanceEngine open(testing::cpuDevice(), first.scene);
+  double worst = 0.0, worstClear = 0.0;
+  long points = 0, clear = 0, thin = 0;
+  for (long i = 0; i < kConfigurations; ++i) {
+    bench::DegenerateCase c = bench::DegenerateGenerator::make(kSeed, i);
+    thin += c.description.find("thin box") != std::string::npos;
+    c.scene.solids.push_back(anchor);
+    ASSERT_GT(c.scene.kernelOrigin().x(), 45.0) << c.description;
+    Scene unoccluded = c.scene;
+    unoccluded.solids = {anchor};
+    engine.setScene(c.scene);
+    open.setScene(unoccluded);
+    const std::vector<double> e = engine.illuminance(c.points);
+    const std::vector<double> u = open.illuminance(c.points);
+    const std::vector<double> exact = exactIlluminance(c.scene, c.points)[0];
+    double luminance = 0.0;
+    for (const Source& s : c.scene.sources) luminance += s.luminance;
+    const double floor = Tolerance::kKernelRelative * std::numbers::pi * luminance;
+    const double inputTolerance = Tolerance::kRelativeInput * std::max(c.scene.size(), 1.0);
+    for (std::size_t k = 0; k < c.points.size(); ++k) {
+      const Vec3& p = c.points[k].position;
+      bool inside = false;
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Solid& solid : c.scene.solids) {
+        inside = inside || solid.shape.containsStrictly(p, inputTolerance);
+        double outside = -std::numeric_limits<double>::infinity();
+        for (const auto& face : solid.shape.faces())
+          outside = std::max(outside, face.plane.signedDistance(p));
+        nearest = std::min(nearest, std::abs(outside));
+      }
+      if (inside) continue;
+      ++points;
+      const double error = std::abs(e[k] - exact[k]);
+      EXPECT_LE(error, bench::kStressReferenceTolerance * u[k] + floor)
+          << "point " << k << " of [" << c.description << "]: E " << e[k] << " lx, exact "
+          << exact[k] << " lx, unoccluded " << u[k] << " lx";
+      if (u[k] > floor) worst = std::max(worst, error / u[k]);
+      if (nearest >= 5e-3) {
+        ++clear;
+        EXPECT_LE(error, Tolerance::kKernelRelative * u[k] + floor)
+            << "point " << k << " (clear of every box) of [" << c.description << "]: E " << e[k]
+            << " lx, exact " << exact[k] << " lx, unoccluded " << u[k] << " lx";
+        if (u[k] > floor) worstClear = std::max(worstClear, error / u[k]);
+      }
+    }
+  }
+  EXPECT_GT(thin, 0);
+  std::printf(
+      "  %ld configurations (%ld with a 10 mm box) 50 m from the centre, %ld points: worst |E - "
+      "E_exact| / E_unoccluded %.2e, %.2e at the %ld points 5 mm or more from every box\n",
+      kConfigurations, thin, points, worst, worstClear, clear);
 }
 
 // The generator covers what it claims: each kind of box and point occurs in the first 300.

@@ -6,6 +6,7 @@
 #include <numbers>
 #include <string>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "scene/grid_builder.hpp"
@@ -516,10 +517,11 @@ solids:
               3, "solids[0].box", "no volume");
 }
 
-// A solid thinner than 1/1000 of the scene's size is refused (Tolerance::kMinimumThicknessRelative:
-// the float kernels err at its shadow boundaries). The scene below spans a 10 × 10 × 2 m box
-// (diagonal 14.3 m): the limit is 14.3 mm. The thickness is measured across faces, whatever
-// the solid's orientation.
+// A solid thinner than the kernels resolve where it lies is refused (Tolerance::minimumThickness:
+// 100 kernel length tolerances, 1e-4 of its farthest coordinate from the centre of the scene's
+// geometry; the float kernels err at its shadow boundaries below that). The geometry below spans
+// [0, 10] × [0, 10] × [-0.1, 2] m, centre (5, 5, 0.95): the pane reaches 3 m from it, where the
+// limit is 0.3 mm. The thickness is measured across faces, whatever the solid's orientation.
 TEST(Errors, SolidsThinnerThanTheKernelsResolve) {
   const std::string head = R"(penumbra: 1
 sources:
@@ -528,28 +530,32 @@ solids:
   - {name: floor, box: {min: [0, 0, -0.1], max: [10, 10, 0]}}
 )";
   const SceneError e =
-      errorOf(head + "  - {name: pane, box: {min: [2, 2, 0.5], max: [3, 2.01, 1.5]}}\n");
+      errorOf(head + "  - {name: pane, box: {min: [2, 2, 0.5], max: [3, 2.0001, 1.5]}}\n");
   EXPECT_EQ(e.line(), 6) << e.what();
   EXPECT_EQ(e.key(), "solids[1].box") << e.what();
-  EXPECT_NE(std::string(e.what()).find("solid 'pane' is 10 mm thick"), std::string::npos)
+  EXPECT_NE(std::string(e.what()).find("solid 'pane' is 0.1 mm thick"), std::string::npos)
       << e.what();
-  // The limit is 1/1000 of the scene's size (the loader's bounding diagonal, 14.3 m or a little
-  // more): the same digits in m and in mm.
-  EXPECT_NE(std::string(e.what()).find("in a scene of 14."), std::string::npos) << e.what();
-  EXPECT_NE(std::string(e.what()).find("shade solids from 14."), std::string::npos) << e.what();
-  // A tilted slab, 5 mm thick across its faces (its axis-aligned extents are far larger).
+  EXPECT_NE(std::string(e.what()).find("reaches 3 m from the centre"), std::string::npos)
+      << e.what();
+  EXPECT_NE(std::string(e.what()).find("shade solids from 0.3 mm"), std::string::npos) << e.what();
+  // A tilted slab, 0.2 mm thick across its faces (its axis-aligned extents are far larger).
   const SceneError tilted =
       errorOf(head +
               "  - {name: louvre, hull: [[2, 2, 1], [3, 2, 1], [2, 2.5, 1.5], [3, 2.5, 1.5], "
-              "[2, 2.003536, 0.996464], [3, 2.003536, 0.996464], [2, 2.503536, 1.496464], "
-              "[3, 2.503536, 1.496464]]}\n");
+              "[2, 2.00014142, 0.99985858], [3, 2.00014142, 0.99985858], "
+              "[2, 2.50014142, 1.49985858], [3, 2.50014142, 1.49985858]]}\n");
   EXPECT_EQ(tilted.key(), "solids[1].hull") << tilted.what();
-  EXPECT_NE(std::string(tilted.what()).find("'louvre' is 5 mm thick"), std::string::npos)
+  EXPECT_NE(std::string(tilted.what()).find("'louvre' is 0.2 mm thick"), std::string::npos)
       << tilted.what();
-  // Just above the limit loads, and keeps its thickness.
-  const Scene scene = parseScene(
-      head + "  - {name: pane, box: {min: [2, 2, 0.5], max: [3, 2.015, 1.5]}}\n", "test.yaml");
-  EXPECT_NEAR(solidNamed(scene, "pane").shape.thickness(), 0.015, 1e-12);
+  // Just above the limit loads, and keeps its thickness; so does a 10 mm pane, which a limit of
+  // 1/1000 of the scene's size (14.3 mm here) refused.
+  for (const double t : {0.00035, 0.01}) {
+    const Scene scene = parseScene(
+        head + fmt::format("  - {{name: pane, box: {{min: [2, 2, 0.5], max: [3, {}, 1.5]}}}}\n",
+                           2.0 + t),
+        "test.yaml");
+    EXPECT_NEAR(solidNamed(scene, "pane").shape.thickness(), t, 1e-12);
+  }
 }
 
 TEST(Errors, NormalNotPerpendicular) {

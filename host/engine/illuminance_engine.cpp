@@ -255,9 +255,9 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
     }
     own[i] = p.solid;
   }
-  // The volumes are grown by twice the kernel's tolerance: the kernel tests points against them
-  // within its tolerance, in float.
-  const double margin = 2.0 * state_->packed.epsLength;
+  // The volumes are grown by twice the kernel's tolerance at these points: the kernel tests
+  // points against them within its tolerance, in float.
+  const double margin = 2.0 * kernelLengthAt(state_->packed, points);
   const PatchTable table =
       linked ? buildLinkPatchTable(state_->shadows, state_->volumes, state_->packed, points,
                                    FaceLinks{linkStart, linked->faces, receiver},

@@ -143,9 +143,10 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
     packed.occluderVertices.push_back(r.point(v));
     radius = std::max(radius, (v - centre).norm());
   }
-  // The sphere is a culling bound: grow it by the kernel's tolerance so float rounding of the
-  // centre never makes it miss a corner.
-  o.bound = r.point(centre, radius + packed.epsLength);
+  // The sphere is a culling bound: grow it by the kernel's tolerance where its farthest point
+  // lies, so that float rounding of the centre never makes it miss a corner.
+  const double reach = (centre - r.origin).cwiseAbs().maxCoeff() + radius;
+  o.bound = r.point(centre, radius + Tolerance::kernelLength(reach));
   packed.occluders.push_back(o);
 }
 
@@ -185,7 +186,8 @@ constexpr const char* kParamsArgument = "params";
 }  // namespace
 
 std::string illuminanceBuildOptions() {
-  return fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f", Tolerance::kKernelRelative);
+  return fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f -DPN_EPS_LENGTH_REL={:.9g}f",
+                     Tolerance::kKernelRelative, Tolerance::kKernelLengthRelative);
 }
 
 std::vector<std::string> illuminanceArgumentNames() {
@@ -207,11 +209,17 @@ void bindIlluminanceArguments(compute::KernelLaunch& launch, const PnLaunchParam
   }
 }
 
+double kernelLengthAt(const KernelScene& packed, std::span<const SamplePoint> points) {
+  double reach = 0.0;
+  for (const SamplePoint& p : points)
+    reach = std::max(reach, (p.position - packed.origin).cwiseAbs().maxCoeff());
+  return Tolerance::kernelLength(reach);
+}
+
 KernelScene packSceneFrame(const Scene& scene) {
   KernelScene packed;
-  const BoundingBox bounds = scene.bounds();
-  if (!bounds.empty()) packed.origin = 0.5 * (bounds.lo + bounds.hi);
-  packed.epsLength = static_cast<float>(Tolerance::kKernelRelative * std::max(scene.size(), 1.0));
+  packed.origin = scene.kernelOrigin();
+  packed.epsLength = static_cast<float>(Tolerance::kernelLength(0.0));
   packed.sourceCount = static_cast<int>(scene.sources.size());
   return packed;
 }

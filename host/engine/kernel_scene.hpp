@@ -1,10 +1,12 @@
 #pragma once
 // The scene as the illuminance kernel reads it: flat arrays of the structs in
 // kernels/shared_types.h. Built once on the host in double precision, stored as float.
+#include <span>
 #include <string>
 #include <vector>
 
 #include "cl/buffer.hpp"
+#include "geometry/sample_point.hpp"
 #include "geometry/tolerance.hpp"
 #include "kernels/shared_types.h"
 #include "shadow/scene_shadows.hpp"
@@ -12,8 +14,10 @@
 namespace penumbra {
 
 struct KernelScene {
-  // Every position the kernel reads is relative to this point, the centre of the scene's
-  // bounding box (points too: IlluminanceEngine subtracts it before rounding them to float).
+  // Every position the kernel reads is relative to this point, the centre of the bounding box of
+  // the scene's geometry (Scene::geometryBounds: solids, sources, luminaires; not the grids, so
+  // that where a grid lies moves nothing the kernel resolves) (points too: IlluminanceEngine
+  // subtracts it before rounding them to float).
   // Float spacing grows with magnitude: in a 12 × 8 m office, coordinates from the room's corner
   // reach 12 m, where floats are 9.5e-7 m apart; from the centre they reach 6 m (4.8e-7 m), and
   // most lie within 4 m (2.4e-7 m). A point 2 cm from a thin solid sees that solid's shadow
@@ -28,7 +32,9 @@ struct KernelScene {
   std::vector<cl_float4> planes;
   std::vector<cl_int4> edges;  // (from, to, left, right), local to their occluder
   std::vector<cl_float4> occluderVertices;
-  float epsLength = 0.0f;  // absolute length tolerance the kernel uses (m)
+  // The kernel's length tolerance near the origin (m, Tolerance::kernelLength(0)); at a point it
+  // grows with the point's distance from the origin (kernelLengthAt).
+  float epsLength = 0.0f;
   int sourceCount = 0;
 };
 
@@ -41,8 +47,13 @@ KernelScene packSceneFrame(const Scene& scene);
 void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows& emitting,
               const Tolerance& tolerance);
 
+// The largest length tolerance (m) the kernel uses at any of `points` (Tolerance::kernelLength of
+// their largest coordinate relative to packed.origin): what host tests that the kernel repeats in
+// float must allow for.
+double kernelLengthAt(const KernelScene& packed, std::span<const SamplePoint> points);
+
 // The build options of the illuminance program (kernels/illuminance.cl): OpenCL C 1.2 and the
-// kernel's relative tolerance, Tolerance::kKernelRelative.
+// kernel's tolerances, Tolerance::kKernelRelative and Tolerance::kKernelLengthRelative.
 std::string illuminanceBuildOptions();
 
 // The buffers of the kernel `illuminance`, one field per __global argument, in its order. Points

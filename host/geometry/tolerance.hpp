@@ -1,7 +1,8 @@
 #pragma once
 // The one tolerance policy of penumbra. Every geometric comparison on the host uses
 // Tolerance::length (an absolute length derived from the scene's size); the kernel uses
-// kKernelRelative on normalised quantities (sines of angles, fractions of a distance).
+// kKernelRelative on normalised quantities (sines of angles, fractions of a distance) and
+// kernelLength on lengths (a multiple of float's resolution where the point is).
 // Never scatter literals: take them from here.
 #include <algorithm>
 
@@ -22,12 +23,35 @@ struct Tolerance {
   // and still rejects real mix-ups, which are off by tens of degrees. An angle: not scaled.
   static constexpr double kInputAngle = 1e-2;
 
-  // The thinnest solid the float kernels shade correctly, relative to the scene size: 1e-3
-  // (100 × kKernelRelative; a 6 m scene: 6 mm). Thinner slabs put a solid's front and back contour
-  // edges within the kernel's tolerance of each other, and points on their shadow boundaries err
-  // (bench/degenerate_stress --thin: 0.1 mm 14 %, 1–2 mm up to 20 % at grazing points, 5 mm and
-  // 1 cm within the criterion; docs/reliability.md). The loader refuses thinner solids.
-  static constexpr double kMinimumThicknessRelative = 1e-3;
+  // The kernel's length tolerance at a point (plane heights, "P lies on this face"): what float
+  // resolves there, not a fraction of the scene. Positions reach the kernel relative to its origin
+  // (the centre of the scene's geometry, engine/kernel_scene.cpp), so a plane height at P is good
+  // to a few roundings of P's largest coordinate r (2^-24 = 6e-8 relative each: the point's and
+  // the plane's rounding and the dot product's, at most about 6e-7·r). The tolerance is 1e-6·r,
+  // and 1e-6 m within 1 m of the origin, where roundings of 1 m-sized vectors still enter:
+  // 1 µm at the centre, 50 µm at 50 m from it.
+  static constexpr double kKernelLengthRelative = 1e-6;
+  static constexpr double kKernelLengthReach = 1.0;  // m: the floor of r above
+
+  // The thinnest solid the kernels shade correctly, in kernel length tolerances at the solid's
+  // place: 100. A point closer than the tolerance to a face counts as on it, and the face then
+  // hides its whole half-space; beside a slab only a few tolerances thick that misjudges the
+  // source seen past the slab's edges. The stress suite's thin boxes hold its criterion at 85
+  // and 170 tolerances and fail it at 34 and below (bench/degenerate_stress --thin,
+  // docs/reliability.md). At 50 m from the scene's centre: 5 mm; within 1 m of it: 0.1 mm. The
+  // loader refuses thinner solids.
+  static constexpr double kMinimumThicknessInKernelTolerances = 100.0;
+
+  // The kernel's length tolerance (m) at a point whose largest coordinate relative to the
+  // kernel's origin is `reach` (m).
+  static double kernelLength(double reach) {
+    return kKernelLengthRelative * std::max(reach, kKernelLengthReach);
+  }
+  // The thinnest solid (m) the kernels shade correctly where its farthest vertex lies `reach` (m,
+  // largest coordinate) from the kernel's origin.
+  static double minimumThickness(double reach) {
+    return kMinimumThicknessInKernelTolerances * kernelLength(reach);
+  }
 
   double length = 1e-9;  // absolute length tolerance, metres
 

@@ -71,9 +71,7 @@ double Source::emittingArea() const {
   return area;
 }
 
-BoundingBox Scene::bounds() const {
-  // Calculation points count as geometry here: the tolerance derived from this size must also
-  // be fine enough for them (a grid may reach beyond every solid, or a scene may have no solid).
+BoundingBox Scene::geometryBounds() const {
   BoundingBox box;
   const auto add = [&](const Vec3& p) { box.add(p); };
   for (const Solid& solid : solids)
@@ -86,6 +84,14 @@ BoundingBox Scene::bounds() const {
   for (const Luminaire& luminaire : luminaires) {
     for (const LuminaireInstance& instance : luminaire.instances) add(instance.position);
   }
+  return box;
+}
+
+BoundingBox Scene::bounds() const {
+  // Calculation points count as geometry here: the tolerance derived from this size must also
+  // be fine enough for them (a grid may reach beyond every solid, or a scene may have no solid).
+  BoundingBox box = geometryBounds();
+  const auto add = [&](const Vec3& p) { box.add(p); };
   for (const CalculationGrid& grid : grids) {
     if (grid.kind == GridKind::Points) {
       for (std::size_t i = 0; i < grid.size(); ++i) add(grid.position(i));
@@ -98,6 +104,12 @@ BoundingBox Scene::bounds() const {
     for (std::size_t i : {std::size_t{0}, c - 1, (r - 1) * c, r * c - 1}) add(grid.position(i));
   }
   return box;
+}
+
+Vec3 Scene::kernelOrigin() const {
+  BoundingBox box = geometryBounds();
+  if (box.empty()) box = bounds();
+  return box.empty() ? Vec3::Zero() : Vec3(0.5 * (box.lo + box.hi));
 }
 
 double Scene::size() const {

@@ -169,6 +169,12 @@ struct Scene {
   // The bounding box of all geometry: solids, sources, luminaires' photometric centres and
   // calculation points (m).
   BoundingBox bounds() const;
+  // The same without the calculation points: what the scene is made of (m).
+  BoundingBox geometryBounds() const;
+  // The point the kernels' positions are relative to (m): the centre of geometryBounds(), or of
+  // bounds() in a scene of calculation points only. A solid's distance from it sets the thinnest
+  // the kernels resolve it (Tolerance::minimumThickness); grids do not move it.
+  Vec3 kernelOrigin() const;
   // Its diagonal (m); the scale of Tolerance.
   double size() const;
 };

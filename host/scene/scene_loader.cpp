@@ -65,17 +65,23 @@ double specSize(const SceneSpec& spec) {
   return (high.array() >= low.array()).all() ? (high - low).norm() : 0.0;
 }
 
-// A solid thinner than the kernels resolve would give wrong shadows at its boundary, silently:
-// refuse it, naming the solid, its thickness and what would do (Tolerance says why the limit).
-void requireThickness(const Solid& solid, double minimum, double sceneSize,
-                      const std::filesystem::path& file, const Where& where) {
+// A solid thinner than the kernels resolve where it lies would give wrong shadows at its
+// boundary, silently: refuse it, naming the solid, its thickness, how far it lies from the
+// scene's centre and what would do there (Tolerance::minimumThickness says why the limit).
+void requireThickness(const Solid& solid, const Vec3& origin, const std::filesystem::path& file,
+                      const Where& where) {
   const double thickness = solid.shape.thickness();
+  double reach = 0.0;
+  for (const Vec3& v : solid.shape.vertices())
+    reach = std::max(reach, (v - origin).cwiseAbs().maxCoeff());
+  const double minimum = Tolerance::minimumThickness(reach);
   if (thickness >= minimum) return;
   fail(file, where,
-       fmt::format("solid '{}' is {:.3g} mm thick at its thinnest; in a scene of {:.3g} m the "
-                   "float kernels shade solids from {:.3g} mm (1/1000 of the scene's size) "
-                   "correctly: model it at {:.3g} mm or more, or leave it out",
-                   solid.name, 1e3 * thickness, sceneSize, 1e3 * minimum, 1e3 * minimum));
+       fmt::format("solid '{}' is {:.3g} mm thick at its thinnest; it reaches {:.3g} m from the "
+                   "centre of the scene's geometry, where the float kernels shade solids from "
+                   "{:.3g} mm correctly: model it at {:.3g} mm or more, move the scene nearer "
+                   "its centre, or leave it out",
+                   solid.name, 1e3 * thickness, reach, 1e3 * minimum, 1e3 * minimum));
 }
 
 // Sources that light nothing and grids that can only give zeros load, with a warning each.
@@ -93,7 +99,6 @@ void addPlacementWarnings(const SceneSpec& spec, Scene& scene, double tolerance)
 
 Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   const double sceneSize = std::max(specSize(spec), 1.0);
-  const double minimumThickness = Tolerance::kMinimumThicknessRelative * sceneSize;
   BuildContext context{file, Tolerance::kRelativeInput * sceneSize, {}};
   Scene scene;
   scene.file = file;
@@ -102,9 +107,8 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
     BuiltRoom built = buildRoom(*spec.room, context);
     scene.room = std::move(built.room);
     scene.solids = std::move(built.slabs);
-    for (const Solid& slab : scene.solids)
-      requireThickness(slab, minimumThickness, sceneSize, file, spec.room->where);
   }
+  const std::size_t slabs = scene.solids.size();
   if (spec.sky) {
     if (!scene.room || scene.room->openings.empty())
       context.fail(spec.skyWhere,
@@ -126,8 +130,13 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   for (const SolidSpec& solid : spec.solids) {
     scene.solids.push_back(
         Solid{solid.name, buildPolyhedron(solid.shape, solid.shapeWhere, context), solid.material});
-    requireThickness(scene.solids.back(), minimumThickness, sceneSize, file, solid.shapeWhere);
   }
+  // Every solid, source and luminaire is built: the kernels' origin is known, and with it how
+  // thin each solid may be where it lies (grids, built next, do not move it).
+  const Vec3 origin = scene.kernelOrigin();
+  for (std::size_t i = 0; i < scene.solids.size(); ++i)
+    requireThickness(scene.solids[i], origin, file,
+                     i < slabs ? spec.room->where : spec.solids[i - slabs].shapeWhere);
   for (const GridSpec& grid : spec.grids) {
     scene.grids.push_back(buildGrid(grid, scene.room, context));
   }
