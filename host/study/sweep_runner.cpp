@@ -188,8 +188,8 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
 
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}};
     for (const GridReport& g : report.grids) {
-      record.grids.push_back(
-          {g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report))});
+      record.grids.push_back({g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report)),
+                              g.daylight ? caseDaylight(*g.daylight) : CaseDaylight{}});
     }
     const bool stale = fs::exists(caseFolder(settings.output, c->id));
     writeCaseFolder(caseFolder(settings.output, c->id), *scene, report, caseJson(record), outputs);
