@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -155,6 +156,70 @@ TEST(Cli, GridWithTheKernelAgreesWithTheReference) {
     // table's penumbra; tests/reference_test.cpp and the kernel tests hold both to tighter bounds.
     EXPECT_NEAR(a[i].e, b[i].e, 1e-2 * b[i].e) << a[i].x << " " << a[i].y;
   }
+}
+
+// EN 17037 through the daylight factor, end to end: a small window in a room seen direct only
+// (a black room), E_v,d,med = 10 000 lx = E_h, so DF = E / 100 and the minimum level's targets are
+// D_T = 3 % and D_TM = 1 %. The shares in summary.json against the shares counted here from the
+// CSV's DF_pct column.
+TEST(Cli, DaylightProvisionSharesMatchTheCsvDfColumn) {
+  TempDir dir("penumbra-cli-test");
+  writeScene(dir.path() / "scene.yaml", R"(penumbra: 1
+site: {latitude_deg: 51.5, longitude_deg: -0.1, median_diffuse_illuminance_lx: 10000}
+sky: {model: cie-overcast, horizontal_illuminance_lx: 10000, ground_reflectance: 0.2}
+room:
+  size: [4.0, 4.0, 3.0]
+  wall_thickness: 0.2
+  openings:
+    - {name: w1, wall: y0, x: 1.5, z: 0.9, width: 1.0, height: 1.2}
+grids:
+  - {name: reference-plane, height: 0.85, spacing: 0.5, margin: 0.5}
+)");
+  const Result r = runPenumbra(dir.path(), "grid scene.yaml -o out --device cpu --direct-only");
+  if (r.status != 0 && r.err.find("no OpenCL device") != std::string::npos) {
+    GTEST_SKIP() << "no OpenCL CPU device: " << r.err;
+  }
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto all = lines(readText(dir.path() / "out" / "reference-plane.csv"));
+  ASSERT_EQ(all.at(0), "x_m,y_m,z_m,nx,ny,nz,E_lx,DF_pct,inside");
+  std::vector<double> df;
+  for (std::size_t i = 1; i < all.size(); ++i) {
+    std::stringstream row(all[i]);
+    std::string cell;
+    for (int c = 0; c <= 7; ++c) std::getline(row, cell, ',');
+    df.push_back(std::stod(cell));
+  }
+  ASSERT_FALSE(df.empty());
+  const auto share = [&](double target) {
+    std::size_t n = 0;
+    for (double d : df) n += d >= target ? 1 : 0;
+    return 100.0 * static_cast<double>(n) / static_cast<double>(df.size());
+  };
+  const nlohmann::json summary =
+      nlohmann::json::parse(readText(dir.path() / "out" / "summary.json"));
+  const nlohmann::json& en = summary["grids"][0]["daylight_factor"]["en17037"];
+  EXPECT_EQ(en["median_diffuse_illuminance_lx"].get<double>(), 10000.0);
+  const double targets[][2] = {{3.0, 1.0}, {5.0, 3.0}, {7.5, 5.0}};  // %: D_T, D_TM
+  std::string reached = "none";
+  for (std::size_t k = 0; k < 3; ++k) {
+    const nlohmann::json& level = en["levels"][k];
+    EXPECT_NEAR(level["DF_target_pct"].get<double>(), targets[k][0], 1e-12);
+    EXPECT_NEAR(level["DF_minimum_target_pct"].get<double>(), targets[k][1], 1e-12);
+    // The CSV's DF is written to its digits: a point within them of a target could count on
+    // either side, so the shares agree to one point.
+    const double step = 100.0 / static_cast<double>(df.size());
+    EXPECT_NEAR(level["share_at_least_target_pct"].get<double>(), share(targets[k][0]), step);
+    EXPECT_NEAR(level["share_at_least_minimum_target_pct"].get<double>(), share(targets[k][1]),
+                step);
+    const bool met = share(targets[k][0]) >= 50.0 && share(targets[k][1]) >= 95.0;
+    EXPECT_EQ(level["met"].get<bool>(), met) << level;
+    if (met) reached = level["level"].get<std::string>();
+  }
+  EXPECT_EQ(en["level_reached"].get<std::string>(), reached);
+  std::printf("  EN 17037 over %zu points: DF >= 3 %% on %.1f %%, >= 1 %% on %.1f %%: %s\n",
+              df.size(), share(3.0), share(1.0), reached.c_str());
+  EXPECT_NE(r.out.find("EN 17037 daylight provision reached: " + reached), std::string::npos)
+      << r.out;
 }
 
 // --no-culling runs the plain path (every occluder at every point): the same numbers, and the

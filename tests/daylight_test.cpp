@@ -375,6 +375,110 @@ TEST(DaylightFactor, FiguresOfAKnownSetOfValues) {
   EXPECT_DOUBLE_EQ(daylightMetrics({100.0, 500.0, 300.0}, {}, 10000.0).median, 3.0);
 }
 
+// ---- EN 17037 daylight provision through the daylight factor
+
+TEST(DaylightProvision, TheUnobstructedSkyMeetsEveryLevel) {
+  // DF = 100 % at every point; with E_v,d,med = 15 000 lx the targets are 2 / 0.67 % (minimum),
+  // 3.33 / 2 % (medium), 5 / 3.33 % (high).
+  const DaylightMetrics m = daylightMetrics(std::vector<double>(12, 10000.0), {}, 10000.0, 15000.0);
+  ASSERT_TRUE(m.provision);
+  ASSERT_EQ(m.provision->levels.size(), std::size(kDaylightProvisionLevels));
+  const double targets[][2] = {{2.0, 100.0 / 150.0}, {10.0 / 3.0, 2.0}, {5.0, 10.0 / 3.0}};
+  for (std::size_t k = 0; k < m.provision->levels.size(); ++k) {
+    const DaylightProvisionCheck& c = m.provision->levels[k];
+    EXPECT_NEAR(c.target, targets[k][0], 1e-12) << kDaylightProvisionLevels[k].name;
+    EXPECT_NEAR(c.minimumTarget, targets[k][1], 1e-12) << kDaylightProvisionLevels[k].name;
+    EXPECT_EQ(c.shareTarget, 1.0);
+    EXPECT_EQ(c.shareMinimumTarget, 1.0);
+    EXPECT_TRUE(c.met);
+  }
+  EXPECT_EQ(m.provision->reached(), "high");
+  // Without E_v,d,med there is no verdict.
+  EXPECT_FALSE(daylightMetrics({100.0}, {}, 10000.0).provision);
+}
+
+// With E_h = E_v,d,med = 10 000 lx, DF = E / 100 and the targets are 3 / 1 % (minimum), 5 / 3 %
+// (medium), 7.5 / 5 % (high). 20 points: 1 at DF 0.5 %, 9 at 2 %, 10 at 4 %: DF >= 3 % on
+// exactly 50 % and DF >= 1 % on exactly 95 % (the minimum level met at both bounds), DF >= 5 %
+// nowhere.
+std::vector<double> provisionCase() {
+  std::vector<double> e(1, 50.0);
+  e.insert(e.end(), 9, 200.0);
+  e.insert(e.end(), 10, 400.0);
+  return e;
+}
+
+TEST(DaylightProvision, SharesAtTheBoundsOfTheMinimumLevel) {
+  const DaylightMetrics m = daylightMetrics(provisionCase(), {}, 10000.0, 10000.0);
+  ASSERT_TRUE(m.provision);
+  const auto& levels = m.provision->levels;
+  EXPECT_DOUBLE_EQ(levels[0].target, 3.0);
+  EXPECT_DOUBLE_EQ(levels[0].minimumTarget, 1.0);
+  EXPECT_DOUBLE_EQ(levels[0].shareTarget, 0.5);
+  EXPECT_DOUBLE_EQ(levels[0].shareMinimumTarget, 0.95);
+  EXPECT_TRUE(levels[0].met);
+  EXPECT_DOUBLE_EQ(levels[1].shareTarget, 0.0);         // DF >= 5 %
+  EXPECT_DOUBLE_EQ(levels[1].shareMinimumTarget, 0.5);  // DF >= 3 %
+  EXPECT_FALSE(levels[1].met);
+  EXPECT_FALSE(levels[2].met);
+  EXPECT_EQ(m.provision->reached(), "minimum");
+
+  // One point fewer at DF >= 3 % (45 %): the minimum level fails on its target share.
+  std::vector<double> fewer = provisionCase();
+  fewer.back() = 290.0;
+  const DaylightMetrics f = daylightMetrics(fewer, {}, 10000.0, 10000.0);
+  EXPECT_DOUBLE_EQ(f.provision->levels[0].shareTarget, 0.45);
+  EXPECT_FALSE(f.provision->levels[0].met);
+  EXPECT_EQ(f.provision->reached(), "none");
+  // Two points below DF 1 % (90 %): it fails on its minimum target share.
+  std::vector<double> dark = provisionCase();
+  dark[1] = 99.0;
+  const DaylightMetrics d = daylightMetrics(dark, {}, 10000.0, 10000.0);
+  EXPECT_DOUBLE_EQ(d.provision->levels[0].shareMinimumTarget, 0.9);
+  EXPECT_EQ(d.provision->reached(), "none");
+}
+
+TEST(DaylightProvision, TheTablePrintsTargetsSharesAndTheVerdict) {
+  RunReport run;
+  GridReport grid;
+  grid.name = "reference-plane";
+  grid.kind = GridKind::WorkPlane;
+  grid.daylight = daylightMetrics(provisionCase(), {}, 10000.0, 10000.0);
+  run.grids.push_back(grid);
+  const std::string table = summaryTable(run);
+  EXPECT_NE(table.find("E_v,d,med = 10000 lx"), std::string::npos) << table;
+  for (const char* header : {"D_T [%]", "DF >= D_T [% of points]", "D_TM [%]",
+                             "DF >= D_TM [% of points]", "E_T [lx]", "E_TM [lx]"})
+    EXPECT_NE(table.find(header), std::string::npos) << header << "\n" << table;
+  EXPECT_NE(table.find("reference-plane: EN 17037 daylight provision reached: minimum"),
+            std::string::npos)
+      << table;
+  // The minimum level: D_T 3.00 %, 50.00 % of the points; D_TM 1.00 %, 95.00 %; met.
+  EXPECT_NE(table.find("3.00 |"), std::string::npos) << table;
+  EXPECT_NE(table.find("95.00 |"), std::string::npos) << table;
+
+  run.grids.front().daylight = daylightMetrics(provisionCase(), {}, 10000.0);
+  EXPECT_NE(summaryTable(run).find("no verdict without the site's median external diffuse "
+                                   "illuminance (site: median_diffuse_illuminance_lx, lx)"),
+            std::string::npos);
+}
+
+TEST(DaylightProvision, TheSiteGivesTheMedianDiffuseIlluminance) {
+  const Scene scene = parseScene(
+      roomYaml("site: {latitude_deg: 51.5, longitude_deg: -0.1, median_diffuse_illuminance_lx: "
+               "14000}\nsky: {model: cie-overcast, horizontal_illuminance_lx: 10000}\n",
+               1.0),
+      "daylight.yaml");
+  ASSERT_TRUE(scene.site && scene.site->medianDiffuseIlluminance);
+  EXPECT_EQ(*scene.site->medianDiffuseIlluminance, 14000.0);
+  const SceneError e = sceneErrorOf(
+      roomYaml("site: {latitude_deg: 51.5, longitude_deg: 0, median_diffuse_illuminance_lx: -1}\n",
+               1.0),
+      "d.yaml");
+  EXPECT_EQ(e.line(), 2);
+  EXPECT_NE(e.key().find("median_diffuse_illuminance_lx"), std::string::npos) << e.what();
+}
+
 TEST(DaylightFactor, CsvRowsCarryDfInPercentAndItsPartsAddUp) {
   EXPECT_EQ(gridCsvHeader(true, true),
             "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,DF_pct,DF_direct_pct,"

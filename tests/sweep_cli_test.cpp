@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -125,6 +126,60 @@ TEST(SweepCli, EveryCaseEqualsAGridRunOnItAlone) {
     EXPECT_EQ(readText(dir.path() / "out" / "cases" / row[0] / "floor.csv"),
               readText(dir.path() / alone / "floor.csv"));
   }
+}
+
+// A scene with a sky: the daylight factor columns (and the EN 17037 level, the site giving
+// E_v,d,med) per case, each equal to what `penumbra grid` writes in summary.json for the case run
+// alone; a wider window gives a higher mean DF. Direct only, a coarse grid: cheap.
+TEST(SweepCli, DaylightColumnsEqualTheGridRunsDaylightFactor) {
+  TempDir dir("penumbra-sweep-cli");
+  write(dir.path() / "scene.yaml", R"(penumbra: 1
+parameters: {width: 1.0}
+site: {latitude_deg: 51.5, longitude_deg: -0.1, median_diffuse_illuminance_lx: 10000}
+sky: {model: cie-overcast, horizontal_illuminance_lx: 10000}
+room:
+  size: [4, 4, 3]
+  openings:
+    - {name: w, wall: y0, x: "${2 - width/2}", z: 0.9, width: "${width}", height: 1.5}
+grids:
+  - {name: reference-plane, height: 0.85, spacing: 0.5, margin: 0.5}
+)");
+  write(dir.path() / "study.yaml", R"(penumbra-study: 1
+scene: scene.yaml
+parameters:
+  width: [1.0, 3.0]
+charts: false
+)");
+  const Result sweep =
+      runPenumbra(dir.path(), "sweep study.yaml -o out --device cpu --direct-only");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const auto rows = csvRows(dir.path() / "out" / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const std::vector<std::string> header{"case_id",   "width",        "Eavg_lx",      "Emin_lx",
+                                        "Emax_lx",   "U0",           "Ud",           "DFavg_pct",
+                                        "DFmin_pct", "DFmedian_pct", "EN17037_level"};
+  ASSERT_EQ(rows[0], header);
+  const std::map<std::string, int> levels{{"none", 0}, {"minimum", 1}, {"medium", 2}, {"high", 3}};
+  std::vector<double> means;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    SCOPED_TRACE(row[0]);
+    const std::string alone = "alone-" + row[0];
+    const Result grid =
+        runPenumbra(dir.path(), "grid scene.yaml -o " + alone +
+                                    " --device cpu -q --direct-only --set width=" + row[1]);
+    ASSERT_EQ(grid.status, 0) << grid.err;
+    const auto summary = nlohmann::json::parse(readText(dir.path() / alone / "summary.json"));
+    const auto& df = summary["grids"][0]["daylight_factor"];
+    EXPECT_EQ(row[7], fmt::format("{}", df["DFavg_pct"].get<double>()));
+    EXPECT_EQ(row[8], fmt::format("{}", df["DFmin_pct"].get<double>()));
+    EXPECT_EQ(row[9], fmt::format("{}", df["DFmedian_pct"].get<double>()));
+    EXPECT_EQ(row[10],
+              fmt::format("{}", levels.at(df["en17037"]["level_reached"].get<std::string>())));
+    means.push_back(std::stod(row[7]));
+  }
+  std::printf("  DFavg %.3f %% (1 m window), %.3f %% (3 m)\n", means[0], means[1]);
+  EXPECT_GT(means[1], means[0]);
 }
 
 TEST(SweepCli, AKilledRunFinishedByARerunEqualsAnUninterruptedOne) {

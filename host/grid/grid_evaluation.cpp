@@ -270,8 +270,9 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   run.metrics = sums.metrics(grid.spacing);
   if (split) run.directMetrics = directSums.metrics(grid.spacing);
   if (scene.sky)
-    run.daylight =
-        daylightMetrics(std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance);
+    run.daylight = daylightMetrics(
+        std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance,
+        scene.site ? scene.site->medianDiffuseIlluminance : std::optional<double>());
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }

@@ -47,8 +47,46 @@ GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int
   return sums.metrics(spacing);
 }
 
+namespace {
+
+// The share of `sorted` (E in lx, ascending) with DF = 100 · E / E_h >= `df` (%), in [0, 1].
+double shareAtLeast(const std::vector<double>& sorted, double df, double outdoorIlluminance) {
+  if (sorted.empty()) return std::numeric_limits<double>::quiet_NaN();
+  // DF >= df  <=>  E >= df · E_h / 100.
+  const auto below =
+      std::lower_bound(sorted.begin(), sorted.end(), df * outdoorIlluminance / 100.0);
+  return static_cast<double>(sorted.end() - below) / static_cast<double>(sorted.size());
+}
+
+DaylightProvision daylightProvision(const std::vector<double>& sorted, double outdoorIlluminance,
+                                    double medianDiffuseIlluminance) {
+  DaylightProvision p;
+  p.medianDiffuseIlluminance = medianDiffuseIlluminance;
+  for (const DaylightProvisionLevel& level : kDaylightProvisionLevels) {
+    DaylightProvisionCheck check;
+    check.target = 100.0 * level.targetIlluminance / medianDiffuseIlluminance;
+    check.minimumTarget = 100.0 * level.minimumTargetIlluminance / medianDiffuseIlluminance;
+    check.shareTarget = shareAtLeast(sorted, check.target, outdoorIlluminance);
+    check.shareMinimumTarget = shareAtLeast(sorted, check.minimumTarget, outdoorIlluminance);
+    check.met =
+        check.shareTarget >= kTargetShare && check.shareMinimumTarget >= kMinimumTargetShare;
+    p.levels.push_back(check);
+  }
+  return p;
+}
+
+}  // namespace
+
+std::string_view DaylightProvision::reached() const {
+  std::string_view best = "none";
+  for (std::size_t k = 0; k < levels.size() && k < std::size(kDaylightProvisionLevels); ++k)
+    if (levels[k].met) best = kDaylightProvisionLevels[k].name;
+  return best;
+}
+
 DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const double> direct,
-                                double outdoorIlluminance) {
+                                double outdoorIlluminance,
+                                std::optional<double> medianDiffuseIlluminance) {
   DaylightMetrics m;
   m.outdoorIlluminance = outdoorIlluminance;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -57,6 +95,8 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
   if (n == 0) {
     m.mean = m.median = m.min = m.max = m.uniformity = m.directMean = m.internalMean = nan;
     m.shareAtLeast.assign(std::size(kDaylightFactorTargets), nan);
+    if (medianDiffuseIlluminance)
+      m.provision = daylightProvision(illuminance, outdoorIlluminance, *medianDiffuseIlluminance);
     return m;
   }
   double sum = 0.0, directSum = 0.0;
@@ -71,13 +111,10 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
   m.median = toPercent * (n % 2 == 1 ? illuminance[n / 2]
                                      : 0.5 * (illuminance[n / 2 - 1] + illuminance[n / 2]));
   m.uniformity = m.mean > 0.0 ? m.min / m.mean : nan;
-  for (double target : kDaylightFactorTargets) {
-    // DF >= target  <=>  E >= target · E_h / 100.
-    const double e = target * outdoorIlluminance / 100.0;
-    const auto below = std::lower_bound(illuminance.begin(), illuminance.end(), e);
-    m.shareAtLeast.push_back(static_cast<double>(illuminance.end() - below) /
-                             static_cast<double>(n));
-  }
+  for (double target : kDaylightFactorTargets)
+    m.shareAtLeast.push_back(shareAtLeast(illuminance, target, outdoorIlluminance));
+  if (medianDiffuseIlluminance)
+    m.provision = daylightProvision(illuminance, outdoorIlluminance, *medianDiffuseIlluminance);
   return m;
 }
 

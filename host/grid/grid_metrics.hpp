@@ -3,7 +3,9 @@
 // minimum and maximum illuminance and the two uniformities.
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 namespace penumbra {
@@ -38,6 +40,36 @@ class GridMetricsSum {
 // factor"): DF = 100 · E / E_h %, E the illuminance at the point (total, or its direct part) and
 // E_h the sky's unobstructed horizontal illuminance outdoors.
 inline constexpr double kDaylightFactorTargets[] = {1.0, 2.0, 3.0, 5.0};  // %
+
+// EN 17037 daylight provision through the daylight factor (its method for side-lit spaces, the
+// grid being the reference plane): a level is met when DF >= D_T on at least 50 % of the plane
+// and DF >= D_TM on at least 95 % of it, D = 100 · E / E_v,d,med % for the level's target
+// illuminance E_T and minimum target illuminance E_TM, E_v,d,med the site's median external
+// diffuse illuminance.
+struct DaylightProvisionLevel {
+  std::string_view name;
+  double targetIlluminance = 0.0;         // lx: E_T, on 50 % of the reference plane
+  double minimumTargetIlluminance = 0.0;  // lx: E_TM, on 95 % of it
+};
+inline constexpr DaylightProvisionLevel kDaylightProvisionLevels[] = {
+    {"minimum", 300.0, 100.0}, {"medium", 500.0, 300.0}, {"high", 750.0, 500.0}};
+inline constexpr double kTargetShare = 0.5;          // of the reference plane, for D_T
+inline constexpr double kMinimumTargetShare = 0.95;  // for D_TM
+
+struct DaylightProvisionCheck {
+  double target = 0.0, minimumTarget = 0.0;  // %: D_T, D_TM
+  // Shares of the points with DF >= D_T and DF >= D_TM, in [0, 1]; NaN when no point counts.
+  double shareTarget = 0.0, shareMinimumTarget = 0.0;
+  bool met = false;
+};
+
+struct DaylightProvision {
+  double medianDiffuseIlluminance = 0.0;       // lx: E_v,d,med
+  std::vector<DaylightProvisionCheck> levels;  // per kDaylightProvisionLevels entry
+  // The highest level met ("minimum", "medium", "high"), or "none".
+  std::string_view reached() const;
+};
+
 struct DaylightMetrics {
   double outdoorIlluminance = 0.0;                        // lx: E_h
   double mean = 0.0, median = 0.0, min = 0.0, max = 0.0;  // %; NaN when no point counts
@@ -47,11 +79,14 @@ struct DaylightMetrics {
   double directMean = 0.0;    // %: the mean DF of the direct part (sky and ground through the
                               // openings); the mean itself for a direct-only run
   double internalMean = 0.0;  // %: mean − directMean, the internally reflected component
+  std::optional<DaylightProvision> provision;  // when the site gives E_v,d,med
 };
 
-// From E (lx) of the points not inside solids, and of its direct part (empty: direct only).
+// From E (lx) of the points not inside solids, and of its direct part (empty: direct only);
+// the EN 17037 provision when `medianDiffuseIlluminance` (lx, E_v,d,med) is given.
 DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const double> direct,
-                                double outdoorIlluminance);
+                                double outdoorIlluminance,
+                                std::optional<double> medianDiffuseIlluminance = std::nullopt);
 
 // `inside[i]` is the index of the solid that strictly contains point i, -1 for none.
 GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int> inside,

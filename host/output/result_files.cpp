@@ -246,21 +246,45 @@ GridMetrics reportedMetrics(const GridMetrics& metrics, GridKind kind, NumberDig
   return m;
 }
 
+// The EN 17037 daylight provision of a grid (grid_metrics.hpp): targets and shares in %.
+nlohmann::json provisionJson(const DaylightProvision& p) {
+  nlohmann::json levels = nlohmann::json::array();
+  for (std::size_t k = 0; k < p.levels.size(); ++k) {
+    const DaylightProvisionLevel& level = kDaylightProvisionLevels[k];
+    const DaylightProvisionCheck& c = p.levels[k];
+    levels.push_back({{"level", level.name},
+                      {"target_illuminance_lx", level.targetIlluminance},
+                      {"minimum_target_illuminance_lx", level.minimumTargetIlluminance},
+                      {"DF_target_pct", number(c.target)},
+                      {"DF_minimum_target_pct", number(c.minimumTarget)},
+                      {"share_at_least_target_pct", number(100.0 * c.shareTarget)},
+                      {"share_at_least_minimum_target_pct", number(100.0 * c.shareMinimumTarget)},
+                      {"met", c.met}});
+  }
+  return {{"median_diffuse_illuminance_lx", p.medianDiffuseIlluminance},
+          {"required_share_target_pct", 100.0 * kTargetShare},
+          {"required_share_minimum_target_pct", 100.0 * kMinimumTargetShare},
+          {"level_reached", p.reached()},
+          {"levels", levels}};
+}
+
 // The daylight factor figures of a grid (grid_metrics.hpp), in %.
 nlohmann::json daylightJson(const DaylightMetrics& m) {
   nlohmann::json shares = nlohmann::json::array();
   for (std::size_t k = 0; k < m.shareAtLeast.size(); ++k)
     shares.push_back({{"DF_target_pct", kDaylightFactorTargets[k]},
                       {"share_at_least_pct", number(100.0 * m.shareAtLeast[k])}});
-  return {{"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
-          {"DFavg_pct", number(m.mean)},
-          {"DFmedian_pct", number(m.median)},
-          {"DFmin_pct", number(m.min)},
-          {"DFmax_pct", number(m.max)},
-          {"DF_uniformity", number(m.uniformity)},
-          {"DFavg_direct_pct", number(m.directMean)},
-          {"DFavg_internal_pct", number(m.internalMean)},
-          {"shares", shares}};
+  nlohmann::json result = {{"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
+                           {"DFavg_pct", number(m.mean)},
+                           {"DFmedian_pct", number(m.median)},
+                           {"DFmin_pct", number(m.min)},
+                           {"DFmax_pct", number(m.max)},
+                           {"DF_uniformity", number(m.uniformity)},
+                           {"DFavg_direct_pct", number(m.directMean)},
+                           {"DFavg_internal_pct", number(m.internalMean)},
+                           {"shares", shares}};
+  if (m.provision) result["en17037"] = provisionJson(*m.provision);
+  return result;
 }
 
 nlohmann::json summaryJson(const RunReport& report) {

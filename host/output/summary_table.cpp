@@ -70,6 +70,53 @@ std::string percent(double df) {
   return std::isfinite(df) ? fmt::format("{:.2f}", df) : kUndefined;
 }
 
+// The EN 17037 daylight provision of each grid with a sky (grid_metrics.hpp, DaylightProvision):
+// per level its DF targets, the shares of the plane that reach them and the verdict.
+std::string provisionTable(const RunReport& report) {
+  std::vector<Row> rows;
+  double median = 0.0;
+  bool withoutSite = false;
+  for (const GridReport& grid : report.grids) {
+    if (!grid.daylight) continue;
+    if (!grid.daylight->provision) {
+      withoutSite = true;
+      continue;
+    }
+    const DaylightProvision& p = *grid.daylight->provision;
+    median = p.medianDiffuseIlluminance;
+    if (rows.empty())
+      rows.push_back({"Grid", "Level", "E_T [lx]", "D_T [%]", "DF >= D_T [% of points]",
+                      "E_TM [lx]", "D_TM [%]", "DF >= D_TM [% of points]", "Met"});
+    for (std::size_t k = 0; k < p.levels.size(); ++k) {
+      const DaylightProvisionLevel& level = kDaylightProvisionLevels[k];
+      const DaylightProvisionCheck& c = p.levels[k];
+      rows.push_back({grid.name, std::string(level.name),
+                      fmt::format("{:g}", level.targetIlluminance), percent(c.target),
+                      percent(100.0 * c.shareTarget),
+                      fmt::format("{:g}", level.minimumTargetIlluminance), percent(c.minimumTarget),
+                      percent(100.0 * c.shareMinimumTarget), c.met ? "yes" : "no"});
+    }
+  }
+  std::string table;
+  if (!rows.empty()) {
+    table = fmt::format(
+        "EN 17037 daylight provision (daylight factor method, the grid as reference plane, "
+        "E_v,d,med = {:g} lx): a level is met when DF >= D_T = 100 · E_T / E_v,d,med on >= "
+        "{:g} % of the points and DF >= D_TM = 100 · E_TM / E_v,d,med on >= {:g} %\n",
+        median, 100.0 * kTargetShare, 100.0 * kMinimumTargetShare);
+    table += formatRows(rows);
+    for (const GridReport& grid : report.grids)
+      if (grid.daylight && grid.daylight->provision)
+        table += fmt::format("{}: EN 17037 daylight provision reached: {}\n", grid.name,
+                             grid.daylight->provision->reached());
+  }
+  if (withoutSite)
+    table +=
+        "EN 17037: no verdict without the site's median external diffuse illuminance "
+        "(site: median_diffuse_illuminance_lx, lx)\n";
+  return table;
+}
+
 // The daylight factor of each grid with a sky (grid_metrics.hpp); empty when none has one.
 std::string daylightTable(const RunReport& report) {
   std::vector<Row> rows;
@@ -94,7 +141,7 @@ std::string daylightTable(const RunReport& report) {
              "DF: daylight factor, 100 · E / {:g} lx (the sky's unobstructed horizontal "
              "illuminance)\n",
              outdoor) +
-         formatRows(rows);
+         formatRows(rows) + provisionTable(report);
 }
 
 }  // namespace

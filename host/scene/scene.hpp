@@ -123,11 +123,16 @@ struct Sky {
   double groundLuminance() const;  // cd/m²: ρ_g·E_h/π
 };
 
-// Where a daylight scene is (`site:`); read and kept for the sun's position.
+// Where a daylight scene is (`site:`): its position is read and kept for the sun's position; its
+// median external diffuse illuminance gives the EN 17037 daylight-factor targets
+// (grid_metrics.hpp, DaylightProvision).
 struct Site {
   double latitudeDegrees = 0.0, longitudeDegrees = 0.0;  // °, north and east positive
   double timezoneHours = 0.0;                            // h east of UTC
   double northDegrees = 0.0;  // °: the direction of north (read, not yet used)
+  // lx: E_v,d,med, the median of the site's diffuse horizontal illuminance over the 4380 daylit
+  // hours of the year; no EN 17037 verdict without it.
+  std::optional<double> medianDiffuseIlluminance;
 };
 
 // A camera for `penumbra render`: a pinhole at `eye` looking at `target`, `up` tilting the image

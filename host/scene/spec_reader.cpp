@@ -154,10 +154,13 @@ Sky readSky(const Reader& reader, const Field& field) {
   return sky;
 }
 
-// `site: {latitude_deg, longitude_deg, timezone_h, north_deg}`: kept for the sun's position.
+// `site: {latitude_deg, longitude_deg, timezone_h, north_deg, median_diffuse_illuminance_lx}`:
+// the position kept for the sun's position, E_v,d,med for the EN 17037 verdict.
 Site readSite(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "the site");
-  map.allowOnly({"latitude_deg", "longitude_deg", "timezone_h", "north_deg"}, "the site");
+  map.allowOnly(
+      {"latitude_deg", "longitude_deg", "timezone_h", "north_deg", "median_diffuse_illuminance_lx"},
+      "the site");
   Site site;
   const Field latitude = map.require("latitude_deg");
   site.latitudeDegrees = reader.number(latitude);
@@ -167,6 +170,8 @@ Site readSite(const Reader& reader, const Field& field) {
   site.longitudeDegrees = reader.number(map.require("longitude_deg"));
   if (const std::optional<Field> t = map.find("timezone_h")) site.timezoneHours = reader.number(*t);
   if (const std::optional<Field> n = map.find("north_deg")) site.northDegrees = reader.number(*n);
+  if (const std::optional<Field> d = map.find("median_diffuse_illuminance_lx"))
+    site.medianDiffuseIlluminance = reader.positive(*d, "lx");
   return site;
 }
 

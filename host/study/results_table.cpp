@@ -74,7 +74,8 @@ Table buildTable(const StudyLayout& layout, const std::vector<CaseRecord>& recor
     for (const std::string& grid : layout.grids) {
       const CaseGridResult* result = gridOf(r, grid);
       for (StudyMetric m : layout.metrics) {
-        row.push_back(result != nullptr ? number(metricValue(result->metrics, m)) : std::string());
+        row.push_back(result != nullptr ? number(metricValue(result->metrics, result->daylight, m))
+                                        : std::string());
       }
     }
     if (rated) row.push_back(r.ugrMax ? number(*r.ugrMax) : std::string());

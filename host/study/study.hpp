@@ -30,7 +30,10 @@ struct Study {
   scenefile::Where combinationWhere;
   std::vector<std::string> grids;  // the scene's grids to compute; empty: all of them
   scenefile::Where gridsWhere;
-  std::vector<StudyMetric> metrics;  // table columns and charts; default all
+  // Table columns and charts. Without `metrics:` in the study: every illuminance metric, and for
+  // a scene with a sky the daylight ones too (planStudy adds them).
+  std::vector<StudyMetric> metrics;
+  bool metricsGiven = false;         // `metrics:` named them
   bool plots = false;                // per-case plots (what `penumbra grid --plot` draws)
   bool charts = true;                // a chart of each metric against each varied parameter
   std::vector<std::string> renders;  // views of the scene to render per case; empty: none

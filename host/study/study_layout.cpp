@@ -119,7 +119,7 @@ OrderedJson caseJson(const CaseRecord& record) {
                         {"points_inside_solids", g.metrics.pointsInsideSolids},
                         {"spacing_m", number(g.metrics.spacing)}};
     for (const StudyMetricInfo& m : studyMetrics()) {
-      grid[std::string(m.column)] = number(metricValue(g.metrics, m.metric));
+      grid[std::string(m.column)] = number(metricValue(g.metrics, g.daylight, m.metric));
     }
     grids.push_back(grid);
   }
@@ -151,6 +151,15 @@ CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& fil
       grid.metrics.eMax = numberFrom(g.at("Emax_lx"));
       grid.metrics.u0 = numberFrom(g.at("U0"));
       grid.metrics.ud = numberFrom(g.at("Ud"));
+      // The daylight columns are written for every grid (null without a sky).
+      const auto daylight = [&](StudyMetric m) {
+        const auto it = g.find(std::string(metricInfo(m).column));
+        return it == g.end() ? std::numeric_limits<double>::quiet_NaN() : numberFrom(*it);
+      };
+      grid.daylight.mean = daylight(StudyMetric::DFavg);
+      grid.daylight.min = daylight(StudyMetric::DFmin);
+      grid.daylight.median = daylight(StudyMetric::DFmedian);
+      grid.daylight.level = daylight(StudyMetric::EN17037);
       record.grids.push_back(grid);
     }
     record.images = json.at("images").get<std::vector<std::string>>();

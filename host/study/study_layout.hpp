@@ -40,6 +40,7 @@ struct StudyLayout {
 struct CaseGridResult {
   std::string name;
   GridMetrics metrics;
+  CaseDaylight daylight;  // NaN without a sky
 };
 
 // A finished case, as its case.json says.

@@ -11,6 +11,11 @@ const std::vector<StudyMetricInfo>& studyMetrics() {
       {StudyMetric::Emax, "Emax", "lx", "Emax_lx"},
       {StudyMetric::U0, "U0", "", "U0"},
       {StudyMetric::Ud, "Ud", "", "Ud"},
+      {StudyMetric::DFavg, "DFavg", "%", "DFavg_pct", true},
+      {StudyMetric::DFmin, "DFmin", "%", "DFmin_pct", true},
+      {StudyMetric::DFmedian, "DFmedian", "%", "DFmedian_pct", true},
+      // 0 none, 1 minimum, 2 medium, 3 high (CaseDaylight::level).
+      {StudyMetric::EN17037, "EN17037_level", "", "EN17037_level", true},
   };
   return metrics;
 }
@@ -28,7 +33,20 @@ std::optional<StudyMetric> metricNamed(std::string_view name) {
   return std::nullopt;
 }
 
-double metricValue(const GridMetrics& metrics, StudyMetric metric) {
+CaseDaylight caseDaylight(const DaylightMetrics& daylight) {
+  CaseDaylight d;
+  d.mean = daylight.mean;
+  d.min = daylight.min;
+  d.median = daylight.median;
+  if (daylight.provision) {
+    d.level = 0.0;
+    for (std::size_t k = 0; k < daylight.provision->levels.size(); ++k)
+      if (daylight.provision->levels[k].met) d.level = static_cast<double>(k + 1);
+  }
+  return d;
+}
+
+double metricValue(const GridMetrics& metrics, const CaseDaylight& daylight, StudyMetric metric) {
   switch (metric) {
     case StudyMetric::Eavg:
       return metrics.eAvg;
@@ -40,6 +58,14 @@ double metricValue(const GridMetrics& metrics, StudyMetric metric) {
       return metrics.u0;
     case StudyMetric::Ud:
       return metrics.ud;
+    case StudyMetric::DFavg:
+      return daylight.mean;
+    case StudyMetric::DFmin:
+      return daylight.min;
+    case StudyMetric::DFmedian:
+      return daylight.median;
+    case StudyMetric::EN17037:
+      return daylight.level;
   }
   return metrics.eAvg;
 }

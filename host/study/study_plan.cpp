@@ -63,6 +63,13 @@ StudyPlan planStudy(const Study& study, const std::string& estimator,
     if (layout.cases.empty()) {
       for (const CalculationGrid* g : selectGrids(scene, study.grids))
         layout.grids.push_back(g->name);
+      if (!study.metricsGiven && scene.sky) {
+        // The EN 17037 level needs the site's median diffuse illuminance.
+        const bool verdict = scene.site && scene.site->medianDiffuseIlluminance;
+        for (const StudyMetricInfo& info : studyMetrics())
+          if (info.daylight && (info.metric != StudyMetric::EN17037 || verdict))
+            layout.metrics.push_back(info.metric);
+      }
     }
     planned.fingerprint = caseFingerprint(scene, CaseOutputs{layout.grids, estimator, caseOutputs});
     layout.cases.push_back(std::move(planned));

@@ -153,8 +153,10 @@ Study parseStudy(const std::string& yamlText, const std::filesystem::path& file)
   }
   if (const std::optional<Field> m = root.find("metrics")) {
     study.metrics = readMetrics(reader, *m);
+    study.metricsGiven = true;
   } else {
-    for (const StudyMetricInfo& info : studyMetrics()) study.metrics.push_back(info.metric);
+    for (const StudyMetricInfo& info : studyMetrics())
+      if (!info.daylight) study.metrics.push_back(info.metric);
   }
   if (const std::optional<Field> p = root.find("plots")) study.plots = readFlag(reader, *p);
   if (const std::optional<Field> c = root.find("charts")) study.charts = readFlag(reader, *c);

@@ -189,8 +189,8 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
 
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}, false, std::nullopt};
     for (const GridReport& g : report.grids) {
-      record.grids.push_back(
-          {g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report))});
+      record.grids.push_back({g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report)),
+                              g.daylight ? caseDaylight(*g.daylight) : CaseDaylight{}});
     }
     if (!scene->observers.empty()) {
       // UGR_max over the observers (docs/glare.md): L_b from the case's interreflection.
