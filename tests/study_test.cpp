@@ -248,7 +248,7 @@ StudyLayout twoByThree(const std::vector<std::string>& grids) {
 std::vector<CaseRecord> recordsOf(const StudyLayout& layout) {
   std::vector<CaseRecord> records;
   for (const PlannedCase& c : layout.cases) {
-    CaseRecord r{c.id, c.fingerprint, c.values, {}, {}};
+    CaseRecord r{c.id, c.fingerprint, c.values, {}, {}, false, std::nullopt};
     for (const std::string& grid : layout.grids) {
       GridMetrics m;
       m.eAvg = 100.0 * c.values[0].value + c.values[1].value + 0.1;
