@@ -172,7 +172,7 @@ TEST(PlotCli, ChartsThatAbortCostNoResultsAndARerunDrawsThem) {
 
   const Outcome rerun = penumbra(dir.path(), "sweep study.yaml -o out -q");
   ASSERT_EQ(rerun.status, 0) << rerun.err;
-  EXPECT_EQ(rerun.err, "");
+  EXPECT_EQ(rerun.err.find("not drawn"), std::string::npos) << rerun.err;
   std::set<std::string> pngs;
   for (const std::string& name : filesIn(charts)) {
     if (name.ends_with(".png")) pngs.insert(name);

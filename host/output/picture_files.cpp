@@ -47,12 +47,19 @@ PicturesWritten writePictures(const fs::path& directory, const std::string& reco
     }
   }
   StagedDirectory staged(directory);
-  if (!toDraw.empty()) {
+  // A drawing that fails is tried once more for the pictures it left: a display that refused
+  // one connection (an X server busy starting others) usually takes the next.
+  std::vector<std::string> remaining = toDraw;
+  for (int attempt = 0; attempt < 2 && !remaining.empty(); ++attempt) {
     try {
-      draw(toDraw, staged.staging());
+      draw(remaining, staged.staging());
+      written.why.clear();
     } catch (const std::exception& e) {
       written.why = e.what();
     }
+    if (written.why.empty()) break;
+    std::erase_if(remaining,
+                  [&](const std::string& name) { return fs::exists(staged.staging() / name); });
   }
   for (const PictureFile& p : pictures) {
     if (std::find(toDraw.begin(), toDraw.end(), p.fileName) == toDraw.end()) continue;

@@ -33,6 +33,7 @@ using PictureDrawing = std::function<void(const std::vector<std::string>& fileNa
 // record `recordName` beside it holds is kept; the others are drawn with `draw` into a staging
 // folder and renamed into place, with the record. A drawing that fails halfway costs only the
 // pictures it did not draw: those are named in `missing`, so that the next call draws only them.
+// A drawing that throws is called once more for the pictures it left.
 PicturesWritten writePictures(const std::filesystem::path& directory, const std::string& recordName,
                               const std::vector<PictureFile>& pictures, const PictureDrawing& draw);
 
