@@ -295,8 +295,8 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
  * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
  * those this path cannot take. */
 float8 penumbra_face8(const Points8* pts, int8 asked, const FaceView8* fv,
-                      const PnSceneTables* tables, float8 eps_length, const int8* inside, int8* rest,
-                      int8* scalar) {
+                      const PnSceneTables* tables, float8 eps_length, const int8* inside,
+                      int8* rest, int8* scalar) {
   *rest = 0;
   *scalar = 0;
   if (fv->face.vertexCount > PN_VEC_SOURCE) {

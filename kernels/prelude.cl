@@ -34,8 +34,8 @@ typedef struct {
  * centre), so the tolerance is PN_EPS_LENGTH_REL · r, and `near` (the host's epsLength, its value
  * within 1 m of the centre) where that is less. A point, not the scene, sets it: a 10 mm shelf
  * 50 m from the centre is 200 tolerances thick there, whatever the scene's size. */
-#define PN_DEFINE_LENGTH_TOLERANCE(T, S)                                             \
-  inline T length_tolerance##S(float near, T px, T py, T pz) {                       \
+#define PN_DEFINE_LENGTH_TOLERANCE(T, S)                                                  \
+  inline T length_tolerance##S(float near, T px, T py, T pz) {                            \
     return fmax((T)(near), PN_EPS_LENGTH_REL * fmax(fabs(px), fmax(fabs(py), fabs(pz)))); \
   }
 PN_DEFINE_LENGTH_TOLERANCE(float, 1)

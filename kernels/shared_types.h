@@ -184,7 +184,7 @@ typedef struct {
   pn_int pointCount;     /* points in the batch (the buffers may be longer) */
   pn_int luminaireCount; /* placed luminaires */
   pn_int solidCount;
-  float epsLength; /* the length tolerance near the origin (m), as for the illuminance kernel */
+  float epsLength;    /* the length tolerance near the origin (m), as for the illuminance kernel */
   pn_int pointStride; /* the row length of the per-luminaire output `seen` */
   pn_int pad1, pad2, pad3;
 } PnLuminaireParams;
