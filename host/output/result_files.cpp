@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "output/grid_rows.hpp"
+#include "output/json_number.hpp"
 #include "output/staged_directory.hpp"
 
 namespace penumbra {
@@ -32,15 +33,6 @@ void writeFile(const std::filesystem::path& path, const std::function<void(std::
   out.close();
   if (!out) throw std::runtime_error("cannot write " + path.string());
 }
-
-namespace {
-
-// JSON has no NaN: an undefined metric (no points, or U0 with Eavg = 0) is null.
-nlohmann::json number(double value) {
-  return std::isfinite(value) ? nlohmann::json(value) : nlohmann::json(nullptr);
-}
-
-}  // namespace
 
 nlohmann::json parameterJson(const ParameterValues& values) {
   nlohmann::json object = nlohmann::json::object();
@@ -209,15 +201,15 @@ nlohmann::json luminairesJson(const std::vector<LuminaireReport>& reports) {
                             {"file", l.file},
                             {"format", l.format},
                             {"instances", l.instances},
-                            {"lamp_lumens_lm", number(l.lampLumens)},
-                            {"zonal_flux_lm", number(l.zonalFluxLm)},
-                            {"maintenance_factor", number(l.maintenanceFactor)},
+                            {"lamp_lumens_lm", jsonNumber(l.lampLumens)},
+                            {"zonal_flux_lm", jsonNumber(l.zonalFluxLm)},
+                            {"maintenance_factor", jsonNumber(l.maintenanceFactor)},
                             {"model", l.model}};
     if (l.fitOrder >= 0) {
       // The area model: the luminance fit's order and error (relative to the peak candela), and
       // the opening's cells along its length and width ([1, 1]: the fit integrated exactly).
       entry["fit_order"] = l.fitOrder;
-      entry["fit_error"] = number(l.fitError);
+      entry["fit_error"] = jsonNumber(l.fitError);
       entry["parts"] = {l.partsAlongLength, l.partsAlongWidth};
     }
     luminaires.push_back(std::move(entry));
@@ -229,11 +221,11 @@ namespace {
 
 nlohmann::json metricsJson(const GridMetrics& metrics, GridKind kind, NumberDigits digits) {
   const GridMetrics m = reportedMetrics(metrics, kind, digits);
-  return {{"Eavg_lx", number(m.eAvg)},
-          {"Emin_lx", number(m.eMin)},
-          {"Emax_lx", number(m.eMax)},
-          {"U0", number(m.u0)},
-          {"Ud", number(m.ud)}};
+  return {{"Eavg_lx", jsonNumber(m.eAvg)},
+          {"Emin_lx", jsonNumber(m.eMin)},
+          {"Emax_lx", jsonNumber(m.eMax)},
+          {"U0", jsonNumber(m.u0)},
+          {"Ud", jsonNumber(m.ud)}};
 }
 
 }  // namespace
@@ -252,14 +244,15 @@ nlohmann::json provisionJson(const DaylightProvision& p) {
   for (std::size_t k = 0; k < p.levels.size(); ++k) {
     const DaylightProvisionLevel& level = kDaylightProvisionLevels[k];
     const DaylightProvisionCheck& c = p.levels[k];
-    levels.push_back({{"level", level.name},
-                      {"target_illuminance_lx", level.targetIlluminance},
-                      {"minimum_target_illuminance_lx", level.minimumTargetIlluminance},
-                      {"DF_target_pct", number(c.target)},
-                      {"DF_minimum_target_pct", number(c.minimumTarget)},
-                      {"share_at_least_target_pct", number(100.0 * c.shareTarget)},
-                      {"share_at_least_minimum_target_pct", number(100.0 * c.shareMinimumTarget)},
-                      {"met", c.met}});
+    levels.push_back(
+        {{"level", level.name},
+         {"target_illuminance_lx", level.targetIlluminance},
+         {"minimum_target_illuminance_lx", level.minimumTargetIlluminance},
+         {"DF_target_pct", jsonNumber(c.target)},
+         {"DF_minimum_target_pct", jsonNumber(c.minimumTarget)},
+         {"share_at_least_target_pct", jsonNumber(100.0 * c.shareTarget)},
+         {"share_at_least_minimum_target_pct", jsonNumber(100.0 * c.shareMinimumTarget)},
+         {"met", c.met}});
   }
   return {{"median_diffuse_illuminance_lx", p.medianDiffuseIlluminance},
           {"required_share_target_pct", 100.0 * kTargetShare},
@@ -273,15 +266,15 @@ nlohmann::json daylightJson(const DaylightMetrics& m) {
   nlohmann::json shares = nlohmann::json::array();
   for (std::size_t k = 0; k < m.shareAtLeast.size(); ++k)
     shares.push_back({{"DF_target_pct", kDaylightFactorTargets[k]},
-                      {"share_at_least_pct", number(100.0 * m.shareAtLeast[k])}});
+                      {"share_at_least_pct", jsonNumber(100.0 * m.shareAtLeast[k])}});
   nlohmann::json result = {{"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
-                           {"DFavg_pct", number(m.mean)},
-                           {"DFmedian_pct", number(m.median)},
-                           {"DFmin_pct", number(m.min)},
-                           {"DFmax_pct", number(m.max)},
-                           {"DF_uniformity", number(m.uniformity)},
-                           {"DFavg_direct_pct", number(m.directMean)},
-                           {"DFavg_internal_pct", number(m.internalMean)},
+                           {"DFavg_pct", jsonNumber(m.mean)},
+                           {"DFmedian_pct", jsonNumber(m.median)},
+                           {"DFmin_pct", jsonNumber(m.min)},
+                           {"DFmax_pct", jsonNumber(m.max)},
+                           {"DF_uniformity", jsonNumber(m.uniformity)},
+                           {"DFavg_direct_pct", jsonNumber(m.directMean)},
+                           {"DFavg_internal_pct", jsonNumber(m.internalMean)},
                            {"shares", shares}};
   if (m.provision) result["en17037"] = provisionJson(*m.provision);
   return result;
@@ -305,7 +298,7 @@ nlohmann::json summaryJson(const RunReport& report) {
          grid.kind == GridKind::Points ? nlohmann::json(nullptr) : nlohmann::json(grid.rows)},
         {"points", m.points},
         {"points_inside_solids", m.pointsInsideSolids},
-        {"spacing_m", m.spacing > 0.0 ? number(m.spacing) : nlohmann::json(nullptr)},
+        {"spacing_m", m.spacing > 0.0 ? jsonNumber(m.spacing) : nlohmann::json(nullptr)},
         {"time_s", grid.seconds},
     });
     entry.update(metricsJson(m, grid.kind, digits));

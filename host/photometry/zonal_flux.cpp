@@ -4,10 +4,10 @@
 #include <numbers>
 #include <vector>
 
+#include "geometry/angles.hpp"
+
 namespace penumbra::photometry {
 namespace {
-
-constexpr double kRad = std::numbers::pi / 180;
 
 // The zone edges of each node: midpoints to the neighbours, the end nodes' own angles outside.
 std::vector<double> zoneEdges(const std::vector<double>& nodes) {
@@ -25,12 +25,12 @@ std::vector<double> planeWidths(const std::vector<double>& planes, bool periodic
     for (std::size_t j = 0; j < n; ++j) {
       const double before = j == 0 ? planes[n - 1] - 360 : planes[j - 1];
       const double after = j + 1 == n ? planes[0] + 360 : planes[j + 1];
-      widths[j] = n == 1 ? 2 * std::numbers::pi : (after - before) / 2 * kRad;
+      widths[j] = n == 1 ? 2 * std::numbers::pi : (after - before) / 2 * kRadiansPerDegree;
     }
     return widths;
   }
   const std::vector<double> edges = zoneEdges(planes);
-  for (std::size_t j = 0; j < n; ++j) widths[j] = (edges[j + 1] - edges[j]) * kRad;
+  for (std::size_t j = 0; j < n; ++j) widths[j] = (edges[j + 1] - edges[j]) * kRadiansPerDegree;
   return widths;
 }
 
@@ -45,8 +45,9 @@ double zonalFlux(const LightDistribution& distribution) {
   double flux = 0;
   for (std::size_t k = 0; k < inPlane.size(); ++k) {
     // sr per radian of plane: type C's γ is a polar angle, A's and B's in-plane angle a latitude.
-    const double zone = polar ? std::cos(edges[k] * kRad) - std::cos(edges[k + 1] * kRad)
-                              : std::sin(edges[k + 1] * kRad) - std::sin(edges[k] * kRad);
+    const double zone =
+        polar ? std::cos(edges[k] * kRadiansPerDegree) - std::cos(edges[k + 1] * kRadiansPerDegree)
+              : std::sin(edges[k + 1] * kRadiansPerDegree) - std::sin(edges[k] * kRadiansPerDegree);
     double ring = 0;
     for (std::size_t j = 0; j < planes.size(); ++j) ring += distribution.candela(j, k) * widths[j];
     flux += ring * zone;

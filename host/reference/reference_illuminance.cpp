@@ -170,7 +170,8 @@ std::vector<SampledFace> buildFaces(const Scene& scene, int n, double tolerance)
 
 // True when every point lies at least `margin` on the positive side of the plane
 // {normal·x = offset}: their convex hull then stays out of the half-space behind it.
-bool allBeyond(const Vec3& normal, double offset, const std::vector<Vec3>& points, double margin) {
+bool allAtOrBeyond(const Vec3& normal, double offset, const std::vector<Vec3>& points,
+                   double margin) {
   return std::all_of(points.begin(), points.end(),
                      [&](const Vec3& p) { return normal.dot(p) - offset >= margin; });
 }
@@ -183,10 +184,10 @@ bool allBeyond(const Vec3& normal, double offset, const std::vector<Vec3>& point
 bool mayBlock(const Occluder& o, const Vec3& p, const SampledFace& face,
               const std::vector<Vec3>& pyramid, double tolerance) {
   for (int pl = 0; pl < static_cast<int>(o.normals.size()); ++pl) {
-    if (allBeyond(o.normals[pl], o.shrunkOffsets[pl], pyramid, 0.0)) return false;
+    if (allAtOrBeyond(o.normals[pl], o.shrunkOffsets[pl], pyramid, 0.0)) return false;
   }
   // The pyramid lies in front of the source plane; a solid behind it cannot block.
-  if (allBeyond(-face.normal, -face.offset, o.vertices, tolerance)) return false;
+  if (allAtOrBeyond(-face.normal, -face.offset, o.vertices, tolerance)) return false;
   const int k = static_cast<int>(face.vertices.size());
   for (int i = 0; i < k; ++i) {
     Vec3 normal = (face.vertices[i] - p).cross(face.vertices[(i + 1) % k] - p);
@@ -194,7 +195,7 @@ bool mayBlock(const Occluder& o, const Vec3& p, const SampledFace& face,
     if (length == 0.0) continue;
     normal /= length;
     if (normal.dot(face.centroid - p) > 0.0) normal = -normal;  // outward from the pyramid
-    if (allBeyond(normal, normal.dot(p), o.vertices, tolerance)) return false;
+    if (allAtOrBeyond(normal, normal.dot(p), o.vertices, tolerance)) return false;
   }
   return true;
 }

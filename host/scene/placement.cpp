@@ -68,8 +68,8 @@ std::string describeExtent(const std::vector<Vec3>& points) {
 }
 
 std::string describeDirection(const Vec3& direction) {
-  return "[" + rounded(direction.x()) + ", " + rounded(direction.y()) + ", " +
-         rounded(direction.z()) + "]";
+  return fmt::format("[{}, {}, {}]", rounded(direction.x()), rounded(direction.y()),
+                     rounded(direction.z()));
 }
 
 }  // namespace penumbra::scenefile

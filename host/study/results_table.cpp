@@ -11,7 +11,7 @@
 namespace penumbra {
 namespace {
 
-std::string number(double value) {
+std::string csvNumber(double value) {
   return std::isfinite(value) ? fmt::format("{}", value) : std::string();
 }
 
@@ -69,16 +69,17 @@ Table buildTable(const StudyLayout& layout, const std::vector<CaseRecord>& recor
     for (const std::string& name : layout.parameters) {
       const auto it = std::find_if(r.values.begin(), r.values.end(),
                                    [&](const ParameterValue& p) { return p.name == name; });
-      row.push_back(it == r.values.end() ? std::string() : number(it->value));
+      row.push_back(it == r.values.end() ? std::string() : csvNumber(it->value));
     }
     for (const std::string& grid : layout.grids) {
       const CaseGridResult* result = gridOf(r, grid);
       for (StudyMetric m : layout.metrics) {
-        row.push_back(result != nullptr ? number(metricValue(result->metrics, result->daylight, m))
-                                        : std::string());
+        row.push_back(result != nullptr
+                          ? csvNumber(metricValue(result->metrics, result->daylight, m))
+                          : std::string());
       }
     }
-    if (rated) row.push_back(r.ugrMax ? number(*r.ugrMax) : std::string());
+    if (rated) row.push_back(r.ugrMax ? csvNumber(*r.ugrMax) : std::string());
     for (const std::string& image : images) {
       const bool has = std::find(r.images.begin(), r.images.end(), image) != r.images.end();
       row.push_back(has ? (std::filesystem::path(kCasesFolder) / r.id / image).generic_string()

@@ -5,20 +5,14 @@
 #include <limits>
 #include <stdexcept>
 
+#include "output/json_number.hpp"
+
 namespace penumbra {
 namespace {
 
 // Ordered both ways: parameters keep the study's order in the files and when read back.
 using Json = nlohmann::ordered_json;
 using OrderedJson = nlohmann::ordered_json;
-
-// JSON has no NaN: an undefined metric is null, and null reads back as NaN.
-OrderedJson number(double value) {
-  return std::isfinite(value) ? OrderedJson(value) : OrderedJson(nullptr);
-}
-double numberFrom(const Json& json) {
-  return json.is_null() ? std::numeric_limits<double>::quiet_NaN() : json.get<double>();
-}
 
 OrderedJson valuesJson(const ParameterValues& values) {
   OrderedJson object = OrderedJson::object();
@@ -117,9 +111,10 @@ OrderedJson caseJson(const CaseRecord& record) {
     OrderedJson grid = {{"name", g.name},
                         {"points", g.metrics.points},
                         {"points_inside_solids", g.metrics.pointsInsideSolids},
-                        {"spacing_m", number(g.metrics.spacing)}};
+                        {"spacing_m", jsonNumber<OrderedJson>(g.metrics.spacing)}};
     for (const StudyMetricInfo& m : studyMetrics()) {
-      grid[std::string(m.column)] = number(metricValue(g.metrics, g.daylight, m.metric));
+      grid[std::string(m.column)] =
+          jsonNumber<OrderedJson>(metricValue(g.metrics, g.daylight, m.metric));
     }
     grids.push_back(grid);
   }
@@ -145,16 +140,16 @@ CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& fil
       grid.name = g.at("name").get<std::string>();
       grid.metrics.points = g.at("points").get<std::size_t>();
       grid.metrics.pointsInsideSolids = g.at("points_inside_solids").get<std::size_t>();
-      grid.metrics.spacing = numberFrom(g.at("spacing_m"));
-      grid.metrics.eAvg = numberFrom(g.at("Eavg_lx"));
-      grid.metrics.eMin = numberFrom(g.at("Emin_lx"));
-      grid.metrics.eMax = numberFrom(g.at("Emax_lx"));
-      grid.metrics.u0 = numberFrom(g.at("U0"));
-      grid.metrics.ud = numberFrom(g.at("Ud"));
+      grid.metrics.spacing = numberFromJson(g.at("spacing_m"));
+      grid.metrics.eAvg = numberFromJson(g.at("Eavg_lx"));
+      grid.metrics.eMin = numberFromJson(g.at("Emin_lx"));
+      grid.metrics.eMax = numberFromJson(g.at("Emax_lx"));
+      grid.metrics.u0 = numberFromJson(g.at("U0"));
+      grid.metrics.ud = numberFromJson(g.at("Ud"));
       // The daylight columns are written for every grid (null without a sky).
       const auto daylight = [&](StudyMetric m) {
         const auto it = g.find(std::string(metricInfo(m).column));
-        return it == g.end() ? std::numeric_limits<double>::quiet_NaN() : numberFrom(*it);
+        return it == g.end() ? std::numeric_limits<double>::quiet_NaN() : numberFromJson(*it);
       };
       grid.daylight.mean = daylight(StudyMetric::DFavg);
       grid.daylight.min = daylight(StudyMetric::DFmin);
