@@ -118,4 +118,13 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
   return m;
 }
 
+DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<const double> direct,
+                                      double outdoorIlluminance,
+                                      std::optional<double> medianDiffuseIlluminance) {
+  // DF is E in units of E_h / 100: the metrics of E over an outdoor illuminance of 100.
+  DaylightMetrics m = daylightMetrics(std::move(factors), direct, 100.0, medianDiffuseIlluminance);
+  m.outdoorIlluminance = outdoorIlluminance;
+  return m;
+}
+
 }  // namespace penumbra

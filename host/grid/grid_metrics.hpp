@@ -88,6 +88,12 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
                                 double outdoorIlluminance,
                                 std::optional<double> medianDiffuseIlluminance = std::nullopt);
 
+// The same from DF (%) of the points not inside solids and of its direct part (empty: direct
+// only), as a grid's CSV holds them; E_h (lx) is kept in the result for the record.
+DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<const double> direct,
+                                      double outdoorIlluminance,
+                                      std::optional<double> medianDiffuseIlluminance);
+
 // `inside[i]` is the index of the solid that strictly contains point i, -1 for none.
 GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int> inside,
                         double spacing);

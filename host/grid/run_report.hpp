@@ -33,7 +33,10 @@ struct GridReport {
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
   std::optional<DaylightMetrics> daylight;   // when the scene has a sky
-  double seconds = 0.0;                      // time spent computing E for this grid
+  // Read back from a CSV with a sky (readResults): DF_pct per point, %, and DF_direct_pct with
+  // interreflection; empty otherwise. The run itself writes them from E.
+  std::vector<double> daylightFactor, daylightFactorDirect;
+  double seconds = 0.0;  // time spent computing E for this grid
 };
 
 // A photometric luminaire of the scene as summary.json lists it.

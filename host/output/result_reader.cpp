@@ -6,6 +6,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -77,6 +78,28 @@ ParameterValues readParameters(const nlohmann::json& summary, const fs::path& fi
   return values;
 }
 
+// The daylight factor figures of a grid whose CSV has DF columns: recomputed from them (points
+// inside solids left out, as the run did), with E_h and E_v,d,med from summary.json.
+DaylightMetrics readDaylight(const nlohmann::json& entry, const GridReport& grid,
+                             const fs::path& csv) {
+  if (!entry.contains("daylight_factor")) {
+    throw std::runtime_error(fmt::format(
+        "{} has daylight factor columns, but summary.json gives its grid no daylight_factor",
+        csv.string()));
+  }
+  const nlohmann::json& j = entry.at("daylight_factor");
+  std::optional<double> median;
+  if (j.contains("en17037")) median = j.at("en17037").at("median_diffuse_illuminance_lx");
+  std::vector<double> factors, direct;
+  for (std::size_t i = 0; i < grid.daylightFactor.size(); ++i) {
+    if (!grid.insideSolids[i].empty()) continue;
+    factors.push_back(grid.daylightFactor[i]);
+    if (!grid.daylightFactorDirect.empty()) direct.push_back(grid.daylightFactorDirect[i]);
+  }
+  return daylightFactorMetrics(std::move(factors), direct,
+                               j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+}
+
 GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   GridReport grid;
   grid.name = entry.at("name").get<std::string>();
@@ -109,6 +132,7 @@ GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   if (!grid.direct.empty()) {
     grid.directMetrics = gridMetrics(grid.direct, inside, std::isnan(spacing) ? 0.0 : spacing);
   }
+  if (!grid.daylightFactor.empty()) grid.daylight = readDaylight(entry, grid, csv);
   return grid;
 }
 
@@ -129,16 +153,28 @@ nlohmann::json readSummary(const fs::path& file) {
 
 void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
   std::string line;
-  const auto header = [](bool withParts) {
-    const std::string_view text = gridCsvHeader(withParts);
+  const auto header = [](bool withParts, bool daylight) {
+    const std::string_view text = gridCsvHeader(withParts, daylight);
     return std::string(text.substr(0, text.size() - 1));  // without the line break
   };
-  if (!std::getline(in, line) || (line != header(false) && line != header(true))) {
-    throw std::runtime_error(
-        fmt::format("{}:1: expected the header {} or {}", fileName, header(false), header(true)));
+  bool withParts = false, daylight = false, known = false;
+  if (std::getline(in, line)) {
+    for (const bool parts : {false, true})
+      for (const bool sky : {false, true})
+        if (line == header(parts, sky)) {
+          withParts = parts;
+          daylight = sky;
+          known = true;
+        }
   }
-  const bool withParts = line == header(true);
-  const std::size_t fields = withParts ? 10 : 8;
+  if (!known) {
+    throw std::runtime_error(fmt::format("{}:1: expected one of the headers {}, {}, {} or {}",
+                                         fileName, header(false, false), header(true, false),
+                                         header(false, true), header(true, true)));
+  }
+  // x..nz, E (and its two parts), DF (and its two parts), inside.
+  const std::size_t eFields = withParts ? 3 : 1;
+  const std::size_t fields = 6 + eFields + (daylight ? eFields : 0) + 1;
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty()) continue;
     const std::string where = fmt::format("{}:{}", fileName, lineNumber);
@@ -154,6 +190,10 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
     grid.points.push_back(point);
     grid.illuminance.push_back(parseNumber(f[6], where));
     if (withParts) grid.direct.push_back(parseNumber(f[7], where));
+    if (daylight) {
+      grid.daylightFactor.push_back(parseNumber(f[6 + eFields], where));
+      if (withParts) grid.daylightFactorDirect.push_back(parseNumber(f[7 + eFields], where));
+    }
     grid.insideSolids.push_back(f[fields - 1]);
   }
 }
