@@ -1,0 +1,232 @@
+// The sun (docs/method.md, "The sun"): its position by NOAA's algorithm against published
+// values, and the `sun:` key of a scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "scene/scene_loader.hpp"
+#include "scene/solar_position.hpp"
+#include "scene_errors.hpp"
+
+namespace penumbra {
+namespace {
+
+using testing::sceneErrorOf;
+
+constexpr double kAngleTolerance = 0.01;  // °: the accuracy the solar position is checked to
+
+LocalInstant at(CivilDate date, int hours, int minutes, int seconds, double timezoneHours) {
+  return LocalInstant{date, hours * 3600.0 + minutes * 60.0 + seconds, timezoneHours};
+}
+
+// The difference of two azimuths (°), in [−180, 180).
+double azimuthDifference(double a, double b) {
+  return std::remainder(a - b, 360.0);
+}
+
+// ---- the solar position against published values
+
+// Reda & Andreas, "Solar Position Algorithm for Solar Radiation Applications", NREL/TP-560-34302
+// (2003, rev. 2008), the worked example (Golden, Colorado, 17 October 2003 12:30:30 at UTC−7),
+// and the same instant a day later as pvlib's test suite gives it from the NREL SPA
+// (pvlib/tests/test_solarposition.py, expected_solpos_multi): the topocentric azimuth and the
+// elevation without refraction. The SPA's position is topocentric: the parallax lowers it by
+// 8.8″·cos(elevation) = 0.0019° against this geocentric algorithm, within the tolerance.
+struct PublishedPosition {
+  const char* what;
+  LocalInstant instant;
+  GeographicSite site;
+  double azimuthDegrees, elevationDegrees;
+};
+
+TEST(SolarPosition, MatchesTheNrelSpaExample) {
+  const GeographicSite golden{39.742476, -105.1786};
+  const PublishedPosition cases[] = {
+      {"SPA report example", at({2003, 10, 17}, 12, 30, 30, -7.0), golden, 194.340241, 39.872046},
+      {"pvlib, SPA, a day later", at({2003, 10, 18}, 12, 30, 30, -7.0), golden, 194.311132,
+       39.505196},
+  };
+  for (const PublishedPosition& c : cases) {
+    const SolarPosition p = solarPosition(c.instant, c.site);
+    EXPECT_NEAR(azimuthDifference(p.azimuthDegrees, c.azimuthDegrees), 0.0, kAngleTolerance)
+        << c.what;
+    EXPECT_NEAR(p.elevationDegrees, c.elevationDegrees, kAngleTolerance) << c.what;
+  }
+}
+
+// Meeus, "Astronomical Algorithms" (2nd ed.), example 25.a: the Sun on 1992 October 13.0 TD,
+// apparent declination −7.78507°; example 28.b: the equation of time that day, 13.70940 min
+// (0.25° of hour angle a minute). TD and UT differ by ΔT ≈ 59 s, 0.0003° of declination.
+TEST(SolarPosition, MatchesMeeusDeclinationAndEquationOfTime) {
+  const SolarPosition p = solarPosition(at({1992, 10, 13}, 0, 0, 0, 0.0), GeographicSite{});
+  EXPECT_NEAR(p.declinationDegrees, -7.78507, kAngleTolerance);
+  EXPECT_NEAR(0.25 * p.equationOfTimeMinutes, 0.25 * 13.70940, kAngleTolerance);
+}
+
+// Sunrise, transit and sunset from the NREL SPA web calculator, as pvlib's test suite gives them
+// (expected_rise_set_spa, test_sun_rise_set_transit_spa: ΔT 65 s), at Golden (northern
+// hemisphere, 2 January and 2 August 2015, UTC−7) and at 35° S 0° E (southern hemisphere, 5 July
+// 1996 and 4 December 2004, UTC). The SPA's sunrise and sunset are the instants the centre's
+// geometric elevation is −0.8333° (34′ of refraction and 16′ of semidiameter); its transit the
+// instant the sun crosses the meridian: azimuth 180° north of the sun's declination, 0° south of
+// it. The times are rounded to the second: at sunrise and sunset the elevation changes by at
+// most 0.0035°/s there (0.0018° over the half second of rounding, checked at the instant
+// given); at transit the azimuth turns by up to 0.018°/s, so the check is that the azimuth
+// passes within 0.01° of the meridian in the half second either side of it.
+struct PublishedEvent {
+  const char* what;
+  LocalInstant instant;
+  GeographicSite site;
+};
+
+TEST(SolarPosition, SunriseAndSunsetOfTheNrelSpaCalculator) {
+  constexpr double kRiseSetElevation = -0.8333;  // °
+  const GeographicSite golden{39.742476, -105.1786}, south{-35.0, 0.0};
+  // Left out: Golden's sunset on 2 August 2015 (19:13:58) in that table lies 29 s after the
+  // instant symmetric to its sunrise (05:00:27) about its transit (12:06:58), where the
+  // declination's fall between them (0.15°) moves the sunset earlier, not later; the elevation
+  // there is 0.19° below −0.8333°, the position of an instant about 55 s after sunset.
+  const PublishedEvent cases[] = {
+      {"Golden sunrise 2015-01-02", at({2015, 1, 2}, 7, 21, 55, -7.0), golden},
+      {"Golden sunset 2015-01-02", at({2015, 1, 2}, 16, 47, 43, -7.0), golden},
+      {"Golden sunrise 2015-08-02", at({2015, 8, 2}, 5, 0, 27, -7.0), golden},
+      {"35 S sunrise 1996-07-05", at({1996, 7, 5}, 7, 8, 15, 0.0), south},
+      {"35 S sunset 1996-07-05", at({1996, 7, 5}, 17, 1, 4, 0.0), south},
+      {"35 S sunrise 2004-12-04", at({2004, 12, 4}, 4, 38, 57, 0.0), south},
+      {"35 S sunset 2004-12-04", at({2004, 12, 4}, 19, 2, 3, 0.0), south},
+  };
+  for (const PublishedEvent& c : cases)
+    EXPECT_NEAR(solarPosition(c.instant, c.site).elevationDegrees, kRiseSetElevation,
+                kAngleTolerance)
+        << c.what;
+}
+
+TEST(SolarPosition, TransitOfTheNrelSpaCalculator) {
+  const GeographicSite golden{39.742476, -105.1786}, south{-35.0, 0.0};
+  const struct {
+    PublishedEvent event;
+    double meridianAzimuth;  // °
+  } cases[] = {
+      {{"Golden transit 2015-01-02", at({2015, 1, 2}, 12, 4, 45, -7.0), golden}, 180.0},
+      {{"Golden transit 2015-08-02", at({2015, 8, 2}, 12, 6, 58, -7.0), golden}, 180.0},
+      {{"35 S transit 1996-07-05", at({1996, 7, 5}, 12, 4, 36, 0.0), south}, 0.0},
+      {{"35 S transit 2004-12-04", at({2004, 12, 4}, 11, 50, 22, 0.0), south}, 0.0},
+  };
+  for (const auto& c : cases) {
+    LocalInstant before = c.event.instant, after = c.event.instant;
+    before.secondsOfDay -= 0.5;
+    after.secondsOfDay += 0.5;
+    // The azimuth grows through the transit (east to west): it lies within 0.01° of the
+    // meridian somewhere in the half second either side of the published instant.
+    const double early =
+        azimuthDifference(solarPosition(before, c.event.site).azimuthDegrees, c.meridianAzimuth);
+    const double late =
+        azimuthDifference(solarPosition(after, c.event.site).azimuthDegrees, c.meridianAzimuth);
+    const bool north = c.meridianAzimuth == 180.0;
+    // North of the sun's path the azimuth turns from east to west through south (increasing);
+    // south of it through north (decreasing).
+    const double lo = north ? early : late, hi = north ? late : early;
+    EXPECT_LE(lo, kAngleTolerance) << c.event.what;
+    EXPECT_GE(hi, -kAngleTolerance) << c.event.what;
+    EXPECT_LT(std::abs(lo), 1.0) << c.event.what;  // near the meridian at all
+  }
+}
+
+TEST(SolarPosition, RefractionLiftsTheSunNearTheHorizonOnly) {
+  // NOAA's standard atmosphere: 34.6′ less the fit's error at the horizon, about 1′ at 45°, none
+  // at the zenith (above 85°).
+  const GeographicSite equator{0.0, 0.0};
+  for (int minute = 0; minute < 24 * 60; minute += 7) {
+    const SolarPosition p = solarPosition(at({2026, 3, 21}, 0, minute, 0, 0.0), equator);
+    const double lift = p.apparentElevationDegrees - p.elevationDegrees;
+    if (p.elevationDegrees > 85.0) {
+      EXPECT_EQ(lift, 0.0);
+    }
+    if (p.elevationDegrees > 0.0) {
+      EXPECT_LE(lift, 0.5 + 1e-9);
+    }
+    if (std::abs(p.elevationDegrees - 45.0) < 1.0) {
+      EXPECT_NEAR(lift, 1.0 / 60.0, 0.1 / 60.0);
+    }
+  }
+}
+
+TEST(SolarPosition, DirectionInTheScenesFrame) {
+  // north_deg 0: north +y, east +x; north_deg 90: north −x (counter-clockwise from +y seen from
+  // above), east +y.
+  EXPECT_TRUE(sunDirection(0.0, 0.0, 0.0).isApprox(Vec3(0, 1, 0), 1e-15));
+  EXPECT_TRUE(sunDirection(90.0, 0.0, 0.0).isApprox(Vec3(1, 0, 0), 1e-15));
+  EXPECT_TRUE(sunDirection(0.0, 0.0, 90.0).isApprox(Vec3(-1, 0, 0), 1e-15));
+  EXPECT_TRUE(sunDirection(90.0, 0.0, 90.0).isApprox(Vec3(0, 1, 0), 1e-15));
+  const Vec3 d = sunDirection(180.0, 30.0, 0.0);  // south, 30° up
+  EXPECT_NEAR(d.z(), 0.5, 1e-15);
+  EXPECT_NEAR(d.y(), -std::sqrt(3.0) / 2.0, 1e-15);
+}
+
+// ---- the `sun:` key
+
+std::string sunScene(const std::string& sun, bool withSite = true) {
+  std::string yaml = "penumbra: 1\n";
+  if (withSite)
+    yaml += "site: {latitude_deg: 51.5, longitude_deg: -0.1, timezone_h: 0, north_deg: 30}\n";
+  yaml += sun + "\n";
+  yaml += "solids:\n  - {name: block, box: {min: [0, 0, 0], max: [1, 1, 1]}}\n";
+  return yaml;
+}
+
+TEST(SunKey, PlacesTheSunAtTheSitesDateAndTime) {
+  const Scene scene = parseScene(
+      sunScene("sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 60000}"),
+      "sun.yaml");
+  ASSERT_TRUE(scene.sun);
+  EXPECT_EQ(scene.sun->directNormalIlluminance, 60000.0);
+  const SolarPosition expected =
+      solarPosition(at({2026, 3, 21}, 10, 0, 0, 0.0), GeographicSite{51.5, -0.1});
+  EXPECT_EQ(scene.sun->position.azimuthDegrees, expected.azimuthDegrees);
+  EXPECT_TRUE(scene.sun->aboveHorizon());
+  EXPECT_TRUE(scene.sun->direction.isApprox(
+      sunDirection(expected.azimuthDegrees, expected.apparentElevationDegrees, 30.0), 1e-15));
+  // Seconds may be given.
+  const Scene later = parseScene(
+      sunScene("sun: {date: 2026-03-21, time: \"10:00:30\", direct_normal_illuminance_lx: 1}"),
+      "sun.yaml");
+  EXPECT_EQ(later.sun->instant.secondsOfDay, 36030.0);
+}
+
+TEST(SunKey, ErrorsNameTheLineAndKey) {
+  const struct {
+    std::string sun;
+    const char* key;
+    const char* words;
+  } cases[] = {
+      {"sun: {date: 2026-02-29, time: \"10:00\", direct_normal_illuminance_lx: 1}", "sun.date",
+       "not a day of the calendar"},
+      {"sun: {date: 21.03.2026, time: \"10:00\", direct_normal_illuminance_lx: 1}", "sun.date",
+       "YYYY-MM-DD"},
+      {"sun: {date: 2026-03-21, time: \"24:00\", direct_normal_illuminance_lx: 1}", "sun.time",
+       "not a time of day"},
+      {"sun: {date: 2026-03-21, time: \"10h\", direct_normal_illuminance_lx: 1}", "sun.time",
+       "HH:MM"},
+      {"sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 0}",
+       "sun.direct_normal_illuminance_lx", ""},
+      {"sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 1, azimuth: 3}",
+       "sun", "azimuth"},
+  };
+  for (const auto& c : cases) {
+    const SceneError e = sceneErrorOf(sunScene(c.sun), "sun.yaml");
+    EXPECT_EQ(e.line(), 3) << c.sun;
+    EXPECT_EQ(e.key().rfind(c.key, 0), 0u) << c.sun << ": " << e.what();
+    EXPECT_NE(std::string(e.what()).find(c.words), std::string::npos) << e.what();
+  }
+  const SceneError noSite = sceneErrorOf(
+      sunScene("sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 1}", false),
+      "sun.yaml");
+  EXPECT_EQ(noSite.line(), 2);
+  EXPECT_EQ(noSite.key(), "sun");
+  EXPECT_NE(std::string(noSite.what()).find("needs the site"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace penumbra
