@@ -1,11 +1,16 @@
 // The sun (docs/method.md, "The sun"): its position by NOAA's algorithm against published
-// values, and the `sun:` key of a scene.
+// values, the `sun:` key of a scene, and the sunlight of a disk of 0.53° through openings
+// against closed forms and the geometric projection of a window.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "geometry/angles.hpp"
+#include "illuminance/sunlight.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/solar_position.hpp"
 #include "scene_errors.hpp"
@@ -226,6 +231,217 @@ TEST(SunKey, ErrorsNameTheLineAndKey) {
   EXPECT_EQ(noSite.line(), 2);
   EXPECT_EQ(noSite.key(), "sun");
   EXPECT_NE(std::string(noSite.what()).find("needs the site"), std::string::npos);
+}
+
+// ---- the sunlight of the disk
+
+// Puts the scene's sun in direction `s` (unit), E_dn `directNormal`.
+void setSun(Scene& scene, const Vec3& s, double directNormal) {
+  Sun sun;
+  sun.directNormalIlluminance = directNormal;
+  sun.direction = s;
+  sun.position.apparentElevationDegrees = std::asin(s.z()) * kDegreesPerRadian;
+  sun.position.elevationDegrees = sun.position.apparentElevationDegrees;
+  scene.sun = sun;
+}
+
+double sunAt(const Scene& scene, const Vec3& position, const Vec3& normal, int solid = -1) {
+  const SamplePoint point{position, normal, solid};
+  return sunlight(scene, std::span<const SamplePoint>(&point, 1)).front();
+}
+
+TEST(Sunlight, UnobstructedPointGetsTheDirectNormalIlluminanceTimesTheCosine) {
+  // A block beside the points, not between them and the sun.
+  Scene scene =
+      parseScene("penumbra: 1\nsolids:\n  - {name: block, box: {min: [5, 5, 0], max: [6, 6, 1]}}\n",
+                 "open.yaml");
+  const Vec3 s = Vec3(0.3, -0.5, 0.6).normalized();
+  setSun(scene, s, 60000.0);
+  // Horizontal: E_dn·sin(altitude); facing the sun: E_dn; tilted: E_dn·n·s; facing away: 0.
+  EXPECT_NEAR(sunAt(scene, Vec3(1, 1, 0), Vec3::UnitZ()), 60000.0 * s.z(), 1e-9 * 60000.0);
+  EXPECT_NEAR(sunAt(scene, Vec3(1, 2, 0.5), s), 60000.0, 1e-9 * 60000.0);
+  const Vec3 tilted = Vec3(0.2, 0.1, 1.0).normalized();
+  EXPECT_NEAR(sunAt(scene, Vec3(2, 1, 0.3), tilted), 60000.0 * tilted.dot(s), 1e-9 * 60000.0);
+  EXPECT_EQ(sunAt(scene, Vec3(2, 1, 0.3), -s), 0.0);
+}
+
+TEST(Sunlight, ASunBelowTheHorizonGivesNothing) {
+  Scene scene =
+      parseScene("penumbra: 1\nsolids:\n  - {name: block, box: {min: [5, 5, 0], max: [6, 6, 1]}}\n",
+                 "open.yaml");
+  const Vec3 s = Vec3(0.3, -0.5, -0.1).normalized();
+  setSun(scene, s, 60000.0);
+  ASSERT_FALSE(scene.sun->aboveHorizon());
+  // A point facing the sun would see it, were it above the horizon.
+  EXPECT_EQ(sunAt(scene, Vec3(1, 1, 0), s), 0.0);
+}
+
+TEST(Sunlight, TheLuminanceGivesExactlyTheDirectNormalIlluminance) {
+  // The polygon's projected solid angle: for a regular N-gon of circumradius angle a seen
+  // from its axis, Lambert's formula sums over the edges θ_k·cos γ_k with θ_k the edge's angle
+  // at the eye and γ_k the angle of its plane to the axis; written here from the vertices.
+  const double a = 0.5 * kSunDiameterDegrees * kRadiansPerDegree;
+  const int n = kSunPolygonSides;
+  double sum = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double p0 = 2.0 * std::numbers::pi * k / n, p1 = 2.0 * std::numbers::pi * (k + 1) / n;
+    const Vec3 v0(std::sin(a) * std::cos(p0), std::sin(a) * std::sin(p0), std::cos(a));
+    const Vec3 v1(std::sin(a) * std::cos(p1), std::sin(a) * std::sin(p1), std::cos(a));
+    const Vec3 m = v0.cross(v1);
+    sum += std::atan2(m.norm(), v0.dot(v1)) * m.normalized().z();
+  }
+  const double projected = 0.5 * sum;
+  EXPECT_NEAR(sunLuminance(1.0) * projected, 1.0, 1e-12);
+  // About E_dn / (π sin² a), the disk's.
+  EXPECT_NEAR(sunLuminance(1.0) * std::numbers::pi * std::pow(std::sin(a), 2), 1.0, 0.01);
+}
+
+// A room 6 × 5 × 3 m, walls 0.2 m thick, a window in wall y0 (y from −0.2 to 0) from x = 2 to 4
+// and z = 0.9 to 2.4; the sun towards s = (0.45, −0.7, 0.55)/|.|: it enters through the window
+// and falls on the floor.
+constexpr double kWall = 0.2, kLeft = 2.0, kRight = 4.0, kSill = 0.9, kHead = 2.4;
+
+Scene windowScene(double transmittance) {
+  Scene scene = parseScene(
+      "penumbra: 1\nroom:\n  size: [6, 5, 3]\n  wall_thickness: 0.2\n  openings:\n"
+      "    - {name: w1, wall: y0, x: 2.0, z: 0.9, width: 2.0, height: 1.5, transmittance: " +
+          std::to_string(transmittance) + "}\n",
+      "window.yaml");
+  setSun(scene, Vec3(0.45, -0.7, 0.55).normalized(), 60000.0);
+  return scene;
+}
+
+int floorOf(const Scene& scene) {
+  for (int i = 0; i < static_cast<int>(scene.solids.size()); ++i)
+    if (scene.solids[i].name == "room.floor") return i;
+  return -1;
+}
+
+double floorSun(const Scene& scene, double x, double y) {
+  return sunAt(scene, Vec3(x, y, 0.0), Vec3::UnitZ(), floorOf(scene));
+}
+
+// The x in [lo, hi] where the floor's E_sun along the line at `y` crosses `level` (E grows with
+// x when `rising`), by bisection to 1e-10 m.
+double crossing(const Scene& scene, double y, double lo, double hi, double level, bool rising) {
+  while (hi - lo > 1e-10) {
+    const double mid = 0.5 * (lo + hi);
+    const bool above = floorSun(scene, mid, y) > level;
+    ((above == rising) ? hi : lo) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(Sunlight, PenumbraOfTheJambsWhereTheProjectionThroughTheSunsCentrePutsIt) {
+  const Scene scene = windowScene(1.0);
+  const Vec3 s = scene.sun->direction;
+  const double full = 60000.0 * s.z();  // a floor point that sees the whole disk
+  const double r = 0.5 * kSunDiameterDegrees * kRadiansPerDegree;
+  const double y = 2.2;  // the line of floor points; rays to the sun cross the window's middle
+  // The ray P + λs meets the inner face (y = 0) at λ0 and the outer one (y = −kWall) at λ1 > λ0;
+  // with s_x > 0 it moves towards +x: the left jamb's inner edge and the right jamb's outer edge
+  // bound the patch.
+  const double l0 = y / -s.y(), l1 = (y + kWall) / -s.y();
+  ASSERT_GT(l0 * s.z(), kSill + 0.1);
+  ASSERT_LT(l1 * s.z(), kHead - 0.1);
+  const double leftEdge = kLeft - l0 * s.x();  // the projection through the sun's centre
+  const double rightEdge = kRight - l1 * s.x();
+  // The full patch at the line's middle.
+  EXPECT_NEAR(floorSun(scene, 0.5 * (leftEdge + rightEdge), y), full, 1e-9 * full);
+
+  // Along x at fixed y the penumbra is wider than across the shadow line (which runs along s's
+  // horizontal part) by |s_h| / |s_y|.
+  const double stretch = std::hypot(s.x(), s.y()) / -s.y();
+  const struct {
+    const char* edge;
+    double projected, distance;
+    bool rising;
+  } edges[] = {{"left jamb (inner edge)", leftEdge, l0, true},
+               {"right jamb (outer edge)", rightEdge, l1, false}};
+  for (const auto& e : edges) {
+    const double reach = 2.0 * r * e.distance * stretch;  // more than half the width
+    const double lo = e.projected - reach, hi = e.projected + reach;
+    // The midpoint: half the disk hidden. The plane through P and the vertical edge holds the
+    // sun's centre and the floor's normal, so the two halves give the same light.
+    const double mid = crossing(scene, y, lo, hi, 0.5 * full, e.rising);
+    EXPECT_NEAR(mid, e.projected, 1e-6) << e.edge;
+    // The width: from the first point that sees any of the disk to the first that sees all of
+    // it, across the shadow line. A disk of angular diameter 2r at distance d gives 2r·d; the
+    // 32-gon's width across any direction lies between 2r·cos(π/32) and 2r. Second-order terms
+    // in r (r² = 2e-5) bound the rest.
+    const double start = crossing(scene, y, lo, hi, 1e-9 * full, e.rising);
+    const double end = crossing(scene, y, lo, hi, (1.0 - 1e-9) * full, e.rising);
+    const double width = std::abs(end - start) / stretch;
+    EXPECT_GE(width,
+              2.0 * r * std::cos(std::numbers::pi / kSunPolygonSides) * e.distance * (1.0 - 1e-4))
+        << e.edge;
+    EXPECT_LE(width, 2.0 * r * e.distance * (1.0 + 1e-4)) << e.edge;
+    EXPECT_NEAR(width / e.distance, 0.0093, 0.0001) << e.edge;  // about 1 cm a metre
+  }
+}
+
+// How far inside the geometric projection of the window a floor point is (m, at the wall's
+// faces; negative outside): the least clearance of the central ray from the hole's edges on the
+// inner and the outer face, each less the reach there of the rays within r of it.
+double clearance(const Vec3& s, double x, double y) {
+  const double r = 0.5 * kSunDiameterDegrees * kRadiansPerDegree;
+  double least = 1e300;
+  for (double depth : {0.0, kWall}) {
+    const double l = (y + depth) / -s.y();
+    const double hx = x + l * s.x(), hz = l * s.z();
+    const double reach = 1.01 * l * std::tan(r) / -s.y();  // the disk's rays on the face's plane
+    least = std::min(
+        {least, hx - kLeft - reach, kRight - hx - reach, hz - kSill - reach, kHead - hz - reach});
+  }
+  return least;
+}
+
+double clearanceOutside(const Vec3& s, double x, double y) {
+  const double r = 0.5 * kSunDiameterDegrees * kRadiansPerDegree;
+  double most = -1e300;
+  for (double depth : {0.0, kWall}) {
+    const double l = (y + depth) / -s.y();
+    const double hx = x + l * s.x(), hz = l * s.z();
+    const double reach = 1.01 * l * std::tan(r) / -s.y();
+    most = std::max(
+        {most, kLeft - hx - reach, hx - kRight - reach, kSill - hz - reach, hz - kHead - reach});
+  }
+  return most;
+}
+
+TEST(Sunlight, PatchOutlineIsTheGeometricProjectionOfTheWindow) {
+  const Scene scene = windowScene(1.0);
+  const Vec3 s = scene.sun->direction;
+  const double full = 60000.0 * s.z();
+  int lit = 0, dark = 0;
+  for (double x = 0.05; x < 6.0; x += 0.1)
+    for (double y = 0.05; y < 5.0; y += 0.1) {
+      const double e = floorSun(scene, x, y);
+      if (clearance(s, x, y) > 0.0) {
+        EXPECT_NEAR(e, full, 1e-9 * full) << x << ", " << y;
+        ++lit;
+      } else if (clearanceOutside(s, x, y) > 0.0) {
+        EXPECT_LE(e, 1e-9 * full) << x << ", " << y;
+        ++dark;
+      }
+    }
+  EXPECT_GT(lit, 50);
+  EXPECT_GT(dark, 1000);
+}
+
+TEST(Sunlight, GlazingScalesTheSunByItsTransmittance) {
+  // The sun through an opening counts once, times the opening's τ, as the sky does: everywhere,
+  // the penumbra included.
+  const Scene clear = windowScene(1.0), glazed = windowScene(0.7);
+  const Vec3 s = clear.sun->direction;
+  const double y = 2.2, leftEdge = kLeft - y / -s.y() * s.x();
+  int sunlit = 0;
+  for (double x = leftEdge - 0.05; x < leftEdge + 2.0; x += 0.0123) {
+    const double e = floorSun(clear, x, y);
+    EXPECT_NEAR(floorSun(glazed, x, y), 0.7 * e, 1e-12 * 60000.0) << x;
+    if (e > 0.0) ++sunlit;
+  }
+  EXPECT_GT(sunlit, 100);
 }
 
 }  // namespace
