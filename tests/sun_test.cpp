@@ -6,14 +6,23 @@
 #include <cmath>
 #include <numbers>
 #include <span>
+#include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/angles.hpp"
+#include "grid/grid_evaluation.hpp"
+#include "illuminance/estimator.hpp"
 #include "illuminance/sunlight.hpp"
+#include "output/grid_rows.hpp"
+#include "output/result_files.hpp"
+#include "output/result_reader.hpp"
+#include "output/summary_table.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene/solar_position.hpp"
 #include "scene_errors.hpp"
+#include "study/case_fingerprint.hpp"
 
 namespace penumbra {
 namespace {
@@ -442,6 +451,146 @@ TEST(Sunlight, GlazingScalesTheSunByItsTransmittance) {
     if (e > 0.0) ++sunlit;
   }
   EXPECT_GT(sunlit, 100);
+}
+
+// ---- the sun in a grid's figures
+
+// One grid of a data/ example streamed through the kernel on the CPU, with interreflection.
+GridRun exampleGrid(const Scene& scene, const std::string& name) {
+  EstimatorOptions options;
+  options.device = "cpu";
+  Estimator estimator(options, scene);
+  for (const CalculationGrid& grid : scene.grids)
+    if (grid.name == name)
+      return streamGrid(scene, grid, estimator.function(), estimator.batchSize(), GridBatchSink{});
+  ADD_FAILURE() << "no grid " << name;
+  return {};
+}
+
+TEST(SunInGrids, TheDaylightFactorLeavesTheSunOut) {
+  // data/office-sun.yaml is data/office-daylight.yaml with a sun: the same daylight factor, with
+  // more light.
+  const Scene daylight = loadScene(PENUMBRA_SOURCE_DIR "/data/office-daylight.yaml");
+  const Scene sunny = loadScene(PENUMBRA_SOURCE_DIR "/data/office-sun.yaml");
+  ASSERT_FALSE(daylight.sun);
+  ASSERT_TRUE(sunny.sun && sunny.sun->aboveHorizon());
+  const GridRun without = exampleGrid(daylight, "reference-plane");
+  const GridRun with = exampleGrid(sunny, "reference-plane");
+  ASSERT_TRUE(without.daylight && with.daylight && with.sun);
+  EXPECT_FALSE(without.sun);
+  // The sun reaches part of the plane and adds to E.
+  EXPECT_GT(with.sun->eMax, 1000.0);
+  EXPECT_GT(with.sun->sunlitShare, 0.0);
+  EXPECT_LT(with.sun->sunlitShare, 1.0);
+  EXPECT_NEAR(with.metrics.eAvg - without.metrics.eAvg, with.sun->eAvg, 1e-6 * with.metrics.eAvg);
+  // E − E_sun rounds E_sun's part away within 1e-16 of E: the figures agree to 1e-12.
+  const DaylightMetrics& a = *without.daylight;
+  const DaylightMetrics& b = *with.daylight;
+  const std::pair<double, double> figures[] = {
+      {a.mean, b.mean}, {a.median, b.median},         {a.min, b.min},
+      {a.max, b.max},   {a.directMean, b.directMean}, {a.internalMean, b.internalMean}};
+  for (const auto& [x, y] : figures) EXPECT_NEAR(y, x, 1e-12 * a.max);
+  EXPECT_EQ(a.shareAtLeast, b.shareAtLeast);
+  ASSERT_TRUE(a.provision && b.provision);
+  EXPECT_EQ(a.provision->reached(), b.provision->reached());
+}
+
+TEST(SunInGrids, CsvRowsCarryTheSunAndTheDaylightFactorWithoutIt) {
+  EXPECT_EQ(gridCsvHeader(true, true, true),
+            "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_sun_lx,DF_pct,DF_direct_pct,"
+            "DF_internal_pct,inside\n");
+  EXPECT_EQ(gridCsvHeader(false, false, true), "x_m,y_m,z_m,nx,ny,nz,E_lx,E_sun_lx,inside\n");
+  GridRows rows(NumberDigits::Double);
+  rows.setOutdoorIlluminance(10000.0);
+  rows.setSunColumn(true);
+  const double direct = 1200.0;
+  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), GridRowValues{1250.0, &direct, 1000.0}, "");
+  // E 1250 lx of which 1000 sun, 200 direct from the sky: DF 2.5 %, 2 % direct, 0.5 % internal.
+  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,1250,1200,50,1000,2.5,2,0.5,\n");
+}
+
+TEST(SunInGrids, ASweepCaseIsComputedAgainWhenTheSunChanges) {
+  const auto fingerprint = [](const std::string& sun, double north) {
+    const std::string yaml =
+        "penumbra: 1\nsite: {latitude_deg: 51.5, longitude_deg: -0.1, north_deg: " +
+        std::to_string(north) + "}\n" + sun +
+        "\nsolids:\n  - {name: block, box: {min: [0, 0, 0], max: [1, 1, 1]}}\n"
+        "grids:\n  - {name: g, points: [[2, 2, 0, 0, 0, 1]]}\n";
+    return caseFingerprint(parseScene(yaml, "case.yaml"), CaseOutputs{{"g"}, "kernel", {}});
+  };
+  const std::string ten =
+      "sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 60000}";
+  const std::string base = fingerprint(ten, 0.0);
+  EXPECT_EQ(fingerprint(ten, 0.0), base);
+  EXPECT_NE(fingerprint("", 0.0), base);
+  EXPECT_NE(fingerprint(ten, 15.0), base);
+  EXPECT_NE(
+      fingerprint("sun: {date: 2026-03-21, time: \"11:00\", direct_normal_illuminance_lx: 60000}",
+                  0.0),
+      base);
+  EXPECT_NE(
+      fingerprint("sun: {date: 2026-06-21, time: \"10:00\", direct_normal_illuminance_lx: 60000}",
+                  0.0),
+      base);
+  EXPECT_NE(
+      fingerprint("sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 50000}",
+                  0.0),
+      base);
+}
+
+TEST(SunInGrids, TheTableAndSummaryGiveEsunAndTheSunlitShare) {
+  RunReport run;
+  run.sun = SunReport{145.25, 31.5, 60000.0, true};
+  GridReport grid;
+  grid.name = "plane";
+  grid.kind = GridKind::WorkPlane;
+  // Four points: E_sun 0, 0, 2000 and 6000 lx: mean 2000, max 6000, sunlit 50 %.
+  SunMetricsSum sums;
+  for (double e : {0.0, 0.0, 2000.0, 6000.0}) sums.add(e, false);
+  sums.add(9999.0, true);  // inside a solid: left out
+  grid.sunMetrics = sums.metrics();
+  run.grids.push_back(grid);
+  const std::string table = summaryTable(run);
+  EXPECT_NE(table.find("Sun: azimuth 145.25° (from north towards east), elevation 31.50°, E_dn "
+                       "60000 lx"),
+            std::string::npos)
+      << table;
+  for (const char* header : {"Esun avg [lx]", "Esun max [lx]", "sunlit [% of points]"})
+    EXPECT_NE(table.find(header), std::string::npos) << header << "\n" << table;
+  EXPECT_NE(table.find("2000.0 |        6000.0 |                50.00"), std::string::npos)
+      << table;
+  const nlohmann::json summary = summaryJson(run);
+  EXPECT_EQ(summary["sun"]["azimuth_deg"], 145.25);
+  EXPECT_EQ(summary["sun"]["above_horizon"], true);
+  EXPECT_EQ(summary["grids"][0]["sun"]["Esun_avg_lx"], 2000.0);
+  EXPECT_EQ(summary["grids"][0]["sun"]["Esun_max_lx"], 6000.0);
+  EXPECT_EQ(summary["grids"][0]["sun"]["sunlit_share_pct"], 50.0);
+
+  run.sun->aboveHorizon = false;
+  EXPECT_NE(summaryTable(run).find("Sun: below the horizon: no direct sunlight"),
+            std::string::npos);
+}
+
+TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
+  // `penumbra plot` reads the CSV a sunny run wrote: E, its parts and E_sun come back.
+  GridReport written;
+  written.name = "plane";
+  written.points = {SamplePoint{Vec3(1, 2, 0.85), Vec3::UnitZ(), -1},
+                    SamplePoint{Vec3(1.5, 2, 0.85), Vec3::UnitZ(), -1}};
+  written.insideSolids = {"", ""};
+  written.illuminance = {1250.0, 300.0};
+  written.direct = {1200.0, 200.0};
+  written.sun = {1000.0, 0.0};
+  written.sunMetrics = SunMetrics{500.0, 1000.0, 0.5};
+  written.daylight = DaylightMetrics{};
+  written.daylight->outdoorIlluminance = 10000.0;
+  std::stringstream text;
+  writeGridCsv(text, written, NumberDigits::Double);
+  GridReport read;
+  readGridCsv(text, "plane.csv", read);
+  EXPECT_EQ(read.illuminance, written.illuminance);
+  EXPECT_EQ(read.direct, written.direct);
+  EXPECT_EQ(read.sun, written.sun);
 }
 
 }  // namespace
