@@ -591,6 +591,10 @@ TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
   EXPECT_EQ(read.illuminance, written.illuminance);
   EXPECT_EQ(read.direct, written.direct);
   EXPECT_EQ(read.sun, written.sun);
+  // The daylight factor columns after E_sun, of E less the sun: (1250 − 1000) / 100 = 2.5 %
+  // (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
+  EXPECT_EQ(read.daylightFactor, (std::vector<double>{2.5, 3.0}));
+  EXPECT_EQ(read.daylightFactorDirect, (std::vector<double>{2.0, 2.0}));
 }
 
 }  // namespace

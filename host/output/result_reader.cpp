@@ -97,8 +97,11 @@ DaylightMetrics readDaylight(const nlohmann::json& entry, const GridReport& grid
     factors.push_back(grid.daylightFactor[i]);
     if (!grid.daylightFactorDirect.empty()) direct.push_back(grid.daylightFactorDirect[i]);
   }
-  return daylightFactorMetrics(std::move(factors), direct,
-                               j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  DaylightMetrics metrics = daylightFactorMetrics(
+      std::move(factors), direct, j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  // Without faces_up the grid counts as facing up: its verdict rests on the en17037 key alone.
+  metrics.horizontal = j.value("faces_up", true);
+  return metrics;
 }
 
 GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
