@@ -47,6 +47,27 @@ GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int
   return sums.metrics(spacing);
 }
 
+void SunMetricsSum::add(double sun, bool insideSolid) {
+  if (insideSolid) return;
+  ++counted_;
+  sum_ += sun;
+  max_ = std::max(max_, sun);
+  if (sun > 0.0) ++sunlit_;
+}
+
+SunMetrics SunMetricsSum::metrics() const {
+  SunMetrics m;
+  if (counted_ == 0) {
+    m.eAvg = m.eMax = m.sunlitShare = std::numeric_limits<double>::quiet_NaN();
+    return m;
+  }
+  const auto n = static_cast<double>(counted_);
+  m.eAvg = sum_ / n;
+  m.eMax = max_;
+  m.sunlitShare = static_cast<double>(sunlit_) / n;
+  return m;
+}
+
 namespace {
 
 // The share of `sorted` (E in lx, ascending) with DF = 100 · E / E_h >= `df` (%), in [0, 1].

@@ -80,6 +80,25 @@ struct DaylightMetrics {
                               // openings); the mean itself for a direct-only run
   double internalMean = 0.0;  // %: mean − directMean, the internally reflected component
   std::optional<DaylightProvision> provision;  // when the site gives E_v,d,med
+  // Whether the grid faces up, a horizontal reference plane: EN 17037 judges no other.
+  bool horizontal = true;
+};
+
+// The direct sunlight on a grid's points not inside solids (illuminance/sunlight.hpp).
+struct SunMetrics {
+  double eAvg = 0.0, eMax = 0.0;  // lx; NaN when no point counts
+  double sunlitShare = 0.0;       // of the points with E_sun > 0, in [0, 1]; NaN when none counts
+};
+
+// The metrics of E_sun added point by point.
+class SunMetricsSum {
+ public:
+  void add(double sun, bool insideSolid);
+  SunMetrics metrics() const;
+
+ private:
+  std::size_t counted_ = 0, sunlit_ = 0;
+  double sum_ = 0.0, max_ = 0.0;
 };
 
 // From E (lx) of the points not inside solids, and of its direct part (empty: direct only);

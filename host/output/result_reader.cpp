@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -96,8 +97,11 @@ DaylightMetrics readDaylight(const nlohmann::json& entry, const GridReport& grid
     factors.push_back(grid.daylightFactor[i]);
     if (!grid.daylightFactorDirect.empty()) direct.push_back(grid.daylightFactorDirect[i]);
   }
-  return daylightFactorMetrics(std::move(factors), direct,
-                               j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  DaylightMetrics metrics = daylightFactorMetrics(
+      std::move(factors), direct, j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  // Without faces_up the grid counts as facing up: its verdict rests on the en17037 key alone.
+  metrics.horizontal = j.value("faces_up", true);
+  return metrics;
 }
 
 GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
@@ -153,28 +157,32 @@ nlohmann::json readSummary(const fs::path& file) {
 
 void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
   std::string line;
-  const auto header = [](bool withParts, bool daylight) {
-    const std::string_view text = gridCsvHeader(withParts, daylight);
-    return std::string(text.substr(0, text.size() - 1));  // without the line break
+  // The header names the columns: E's parts, the sun and the daylight factor are each optional.
+  struct Layout {
+    bool withParts, daylight, sun;
+    std::string header;  // without the line break
   };
-  bool withParts = false, daylight = false, known = false;
-  if (std::getline(in, line)) {
-    for (const bool parts : {false, true})
-      for (const bool sky : {false, true})
-        if (line == header(parts, sky)) {
-          withParts = parts;
-          daylight = sky;
-          known = true;
-        }
+  std::vector<Layout> layouts;
+  for (const bool withParts : {false, true})
+    for (const bool daylight : {false, true})
+      for (const bool sun : {false, true}) {
+        const std::string text = gridCsvHeader(withParts, daylight, sun);
+        layouts.push_back({withParts, daylight, sun, text.substr(0, text.size() - 1)});
+      }
+  const bool read = static_cast<bool>(std::getline(in, line));
+  const auto layout = std::find_if(layouts.begin(), layouts.end(),
+                                   [&](const Layout& l) { return read && line == l.header; });
+  if (layout == layouts.end()) {
+    std::string headers;
+    for (const Layout& l : layouts) headers += (headers.empty() ? "" : ", ") + l.header;
+    throw std::runtime_error(
+        fmt::format("{}:1: expected one of the headers {}", fileName, headers));
   }
-  if (!known) {
-    throw std::runtime_error(fmt::format("{}:1: expected one of the headers {}, {}, {} or {}",
-                                         fileName, header(false, false), header(true, false),
-                                         header(false, true), header(true, true)));
-  }
-  // x..nz, E (and its two parts), DF (and its two parts), inside.
-  const std::size_t eFields = withParts ? 3 : 1;
-  const std::size_t fields = 6 + eFields + (daylight ? eFields : 0) + 1;
+  // x..nz, E (and its two parts), E_sun, DF (and its two parts), inside.
+  const std::size_t eFields = layout->withParts ? 3 : 1;
+  const std::size_t sunColumn = 6 + eFields;
+  const std::size_t dfColumn = sunColumn + (layout->sun ? 1 : 0);
+  const std::size_t fields = csvFields(layout->header).size();
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty()) continue;
     const std::string where = fmt::format("{}:{}", fileName, lineNumber);
@@ -189,10 +197,12 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
         Vec3(parseNumber(f[3], where), parseNumber(f[4], where), parseNumber(f[5], where));
     grid.points.push_back(point);
     grid.illuminance.push_back(parseNumber(f[6], where));
-    if (withParts) grid.direct.push_back(parseNumber(f[7], where));
-    if (daylight) {
-      grid.daylightFactor.push_back(parseNumber(f[6 + eFields], where));
-      if (withParts) grid.daylightFactorDirect.push_back(parseNumber(f[7 + eFields], where));
+    if (layout->withParts) grid.direct.push_back(parseNumber(f[7], where));
+    if (layout->sun) grid.sun.push_back(parseNumber(f[sunColumn], where));
+    if (layout->daylight) {
+      grid.daylightFactor.push_back(parseNumber(f[dfColumn], where));
+      if (layout->withParts)
+        grid.daylightFactorDirect.push_back(parseNumber(f[dfColumn + 1], where));
     }
     grid.insideSolids.push_back(f[fields - 1]);
   }
