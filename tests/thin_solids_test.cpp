@@ -105,11 +105,18 @@ std::vector<SamplePoint> pointsNearTheThinSolids(const Scene& scene) {
   return points;
 }
 
+// `v` rounded to float and back, through a volatile float: GCC 12 at -O2 vectorises the round
+// trip of x and y together and drops it (z's, done alone, stays), which would leave the reference
+// with positions the kernel never sees.
+double roundedToFloat(double v) {
+  const volatile float stored = static_cast<float>(v);
+  return stored;
+}
+
 // What the kernel is given: `x` rounded to float relative to `origin`, in double.
 Vec3 asTheKernelSeesIt(const Vec3& x, const Vec3& origin) {
   const Vec3 d = x - origin;
-  return origin +
-         Vec3(static_cast<float>(d.x()), static_cast<float>(d.y()), static_cast<float>(d.z()));
+  return origin + Vec3(roundedToFloat(d.x()), roundedToFloat(d.y()), roundedToFloat(d.z()));
 }
 
 // The scene and points with every position rounded as the kernel rounds it (every solid here is
@@ -132,6 +139,13 @@ Scene roundedAsTheKernel(const Scene& scene, std::vector<SamplePoint>& points) {
       face = ConvexPolygon(std::move(vertices));
     }
   for (SamplePoint& p : points) p.position = asTheKernelSeesIt(p.position, origin);
+  // Every rounded coordinate is a float relative to the origin: the rounding happened.
+  for (const SamplePoint& p : points)
+    for (int k = 0; k < 3; ++k) {
+      const double d = p.position[k] - origin[k];
+      EXPECT_EQ(d, roundedToFloat(d))
+          << "coordinate " << k << " of (" << p.position.transpose() << ")";
+    }
   return rounded;
 }
 
