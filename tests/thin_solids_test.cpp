@@ -7,7 +7,8 @@
 // 0.67 mm, which would take a point 0.1 mm beside a shelf as touching it and lose 5 % of E). The
 // kernel takes points and vertices as double-float pairs (PnPosition, kernels/shared_types.h):
 // rounded to float alone, 28 m from the centre (1.9e-6 m apart), a point 1 mm beside a shelf's
-// edge would see it through a sight line turned by up to 1e-3 and err up to 1.7e-4 of E.
+// edge would see it along a sight line turned by up to 2e-3 and err up to 1.7e-4 of the
+// unoccluded E.
 #include <gtest/gtest.h>
 
 #include <cstdio>
