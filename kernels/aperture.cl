@@ -71,7 +71,7 @@ inline int8 misses_aperture_view8(float8 px, float8 py, float8 pz, ApertureView8
   float8 hs = -v.depth, margin = eps_length * hs;
   int8 u0 = -1, u1 = -1, v0 = -1, v1 = -1;
   for (int k = 0; k < o.vertexCount; ++k) {
-    float4 q = tables->occluderVertices[o.firstVertex + k];
+    float4 q = tables->occluderVertices[o.firstVertex + k].hi;
     float8 dx = q.x - px, dy = q.y - py, dz = q.z - pz;
     float8 xu = (ap.axisU.x * dx + ap.axisU.y * dy + ap.axisU.z * dz) * hs;
     float8 xv = (ap.axisV.x * dx + ap.axisV.y * dy + ap.axisV.z * dz) * hs;

@@ -19,11 +19,11 @@
 
 #include "occluders.cl"
 
-/* The contour edge e of an active occluder, hole-oriented, relative to P: an edge between a face
- * that sees P and one that does not. False when e is not on the contour. Whether a face sees P is
- * tested per edge rather than kept in a bit mask, so that a solid may have any number of faces (a
- * finely faceted sphere has hundreds). */
-inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tables,
+/* The contour edge e of an active occluder, hole-oriented, relative to P (p and p_lo: its hi and
+ * lo parts, PnPosition): an edge between a face that sees P and one that does not. False when e
+ * is not on the contour. Whether a face sees P is tested per edge rather than kept in a bit mask,
+ * so that a solid may have any number of faces (a finely faceted sphere has hundreds). */
+inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSceneTables* tables,
                          float eps_length, float3* a, float3* b) {
   int4 ed = tables->edges[o.firstEdge + e];
   bool left_front = face_sees1(o, ed.z, tables, p.x, p.y, p.z, eps_length);
@@ -31,8 +31,8 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, const PnSceneTables* tab
   if (left_front == right_front) return false;
   /* Run it as the face that does not see P does: that face's loop goes from -> to when it is
    * the left face. */
-  float3 from = tables->occluderVertices[o.firstVertex + ed.x].xyz - p;
-  float3 to = tables->occluderVertices[o.firstVertex + ed.y].xyz - p;
+  float3 from = pn_from1(tables->occluderVertices[o.firstVertex + ed.x], p, p_lo);
+  float3 to = pn_from1(tables->occluderVertices[o.firstVertex + ed.y], p, p_lo);
   if (left_front) {
     *a = to;
     *b = from;

@@ -13,7 +13,8 @@
 /* The kernel: E (lx) at PN_LANES points per work-item, summed over every source face, and each
  * point's shadow class per source (host/shadow/shadow_class.hpp: bit 0 some light arrives, bit 1
  * an occluder may block), written source by source with row length params.sourceStride.
- * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES. params.paths
+ * Points are structure-of-arrays, padded by the host to a multiple of PN_LANES, their positions
+ * double-float (point_x + point_x_lo, …: PnPosition's hi and lo parts). params.paths
  * selects the path (PN_PATH_*). With params.linked, work-item g takes only the faces
  * link_faces[k], k in [link_start[g], link_start[g + 1]) (a link: a face and the work-item's
  * points), its patch entry is patch_faces[k], and E from each link alone is written at
@@ -22,12 +23,13 @@
 
 __kernel void illuminance(
     const PnLaunchParams params, __global const float* point_x, __global const float* point_y,
-    __global const float* point_z, __global const float* normal_x, __global const float* normal_y,
-    __global const float* normal_z, __global const int* point_solid,
-    __global const PnSourceFace* faces, __global const float4* source_vertices,
-    __global const PnLuminancePolynomial* luminances, __global const PnOccluder* occluders,
-    __global const float4* planes, __global const int4* edges,
-    __global const float4* occluder_vertices, __global const PnAperture* apertures,
+    __global const float* point_z, __global const float* point_x_lo,
+    __global const float* point_y_lo, __global const float* point_z_lo,
+    __global const float* normal_x, __global const float* normal_y, __global const float* normal_z,
+    __global const int* point_solid, __global const PnSourceFace* faces,
+    __global const PnPosition* source_vertices, __global const PnLuminancePolynomial* luminances,
+    __global const PnOccluder* occluders, __global const float4* planes, __global const int4* edges,
+    __global const PnPosition* occluder_vertices, __global const PnAperture* apertures,
     __global const PnPatchFace* patch_faces, __global const int* candidates,
     __global const int* link_start, __global const int* link_faces, __global float* illuminance_lx,
     __global int* errors, __global uchar* classes) {
@@ -39,10 +41,12 @@ __kernel void illuminance(
   float8 px = vload8(g, point_x), py = vload8(g, point_y), pz = vload8(g, point_z);
   /* Each point's own length tolerance: float's resolution where it lies (prelude.cl). */
   const float8 eps_length = length_tolerance8(params.epsLength, px, py, pz);
+  float8 lx = vload8(g, point_x_lo), ly = vload8(g, point_y_lo), lz = vload8(g, point_z_lo);
   float8 nx = vload8(g, normal_x), ny = vload8(g, normal_y), nz = vload8(g, normal_z);
   int8 own = vload8(g, point_solid);
-  const Points8 points = {px, py, pz, nx, ny, nz, own};
+  const Points8 points = {px, py, pz, lx, ly, lz, nx, ny, nz, own};
   float lane_px[PN_LANES], lane_py[PN_LANES], lane_pz[PN_LANES];
+  float lane_lx[PN_LANES], lane_ly[PN_LANES], lane_lz[PN_LANES];
   float lane_nx[PN_LANES], lane_ny[PN_LANES], lane_nz[PN_LANES];
   int lane_own[PN_LANES];
   float lane_eps[PN_LANES];
@@ -50,6 +54,9 @@ __kernel void illuminance(
   vstore8(px, 0, lane_px);
   vstore8(py, 0, lane_py);
   vstore8(pz, 0, lane_pz);
+  vstore8(lx, 0, lane_lx);
+  vstore8(ly, 0, lane_ly);
+  vstore8(lz, 0, lane_lz);
   vstore8(nx, 0, lane_nx);
   vstore8(ny, 0, lane_ny);
   vstore8(nz, 0, lane_nz);
@@ -82,9 +89,8 @@ __kernel void illuminance(
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
       if (!all(view.use))
-        e_face = horizon_cuts8(px, py, pz, nx, ny, nz, face, &tables)
-                     ? unoccluded_face8(px, py, pz, nx, ny, nz, face, &tables)
-                     : whole_face8(px, py, pz, nx, ny, nz, face, &tables);
+        e_face = horizon_cuts8(&points, face, &tables) ? unoccluded_face8(&points, face, &tables)
+                                                       : whole_face8(&points, face, &tables);
       if (pn_any(view.use & ~dark)) {
         const PnEmission em = emission_of(face, &tables); /* uniform, or the sky's polynomial */
         e_face =
@@ -136,13 +142,14 @@ __kernel void illuminance(
         for (int l = 0; l < PN_LANES; ++l) {
           if (!lane_shaded[l]) continue;
           float3 p = (float3)(lane_px[l], lane_py[l], lane_pz[l]);
+          float3 p_lo = (float3)(lane_lx[l], lane_ly[l], lane_lz[l]);
           float3 n = (float3)(lane_nx[l], lane_ny[l], lane_nz[l]);
           float3 corners[4];
           if (lane_ap[l])
             for (int i = 0; i < 4; ++i)
               corners[i] = (float3)(lane_cx[i][l], lane_cy[i][l], lane_cz[i][l]);
-          lane_e[l] = penumbra_face(p, n, lane_own[l], face, pf, culling, &tables, lane_eps[l],
-                                    lane_ap[l] != 0, corners, &error);
+          lane_e[l] = penumbra_face(p, p_lo, n, lane_own[l], face, pf, culling, &tables,
+                                    lane_eps[l], lane_ap[l] != 0, corners, &error);
         }
         e_face = vload8(0, lane_e);
       }

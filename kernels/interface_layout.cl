@@ -23,6 +23,8 @@ __kernel void interface_layout(const PnLaunchParams params, __global int* out) {
   out[n++] = (int)sizeof(PnLuminancePolynomial);
   out[n++] = (int)__builtin_offsetof(PnLuminancePolynomial, coefficient);
   out[n++] = (int)__builtin_offsetof(PnLuminancePolynomial, order);
+  out[n++] = (int)sizeof(PnPosition);
+  out[n++] = (int)__builtin_offsetof(PnPosition, lo);
   out[n++] = params.faceCount;
   out[n++] = as_int(params.epsLength);
   out[n++] = params.paths;

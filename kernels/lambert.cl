@@ -118,48 +118,48 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
 /* The same where no lane's horizon cuts the face (every vertex at height >= 0, as
  * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
  * gives there. */
-inline float8 whole_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                          PnSourceFace face, const PnSceneTables* tables) {
+inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+  const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const int m = face.vertexCount;
   const PnEmission em = emission_of(face, tables);
-  float4 q = tables->sourceVertices[face.firstVertex];
-  float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+  float8 ax, ay, az, bx, by, bz;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
-    q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
-    float8 bx = q.x - px, by = q.y - py, bz = q.z - pz;
+    pn_from8(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], pts, &bx, &by,
+             &bz);
     pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz, &em));
     ax = bx;
     ay = by;
     az = bz;
   }
-  return select((float8)(0.0f), sum.s + sum.c, in_front8(face, px, py, pz));
+  return select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
 }
 
-inline bool horizon_cuts8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                          PnSourceFace face, const PnSceneTables* tables) {
+inline bool horizon_cuts8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
   int8 below = 0;
   for (int i = 0; i < face.vertexCount; ++i) {
-    float4 q = tables->sourceVertices[face.firstVertex + i];
-    float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
-    below |= nx * ax + ny * ay + nz * az < 0.0f;
+    float8 ax, ay, az;
+    pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &ax, &ay, &az);
+    below |= pts->nx * ax + pts->ny * ay + pts->nz * az < 0.0f;
   }
   return pn_any(below);
 }
 
-inline float8 unoccluded_face8(float8 px, float8 py, float8 pz, float8 nx, float8 ny, float8 nz,
-                               PnSourceFace face, const PnSceneTables* tables) {
+inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+  const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const PnEmission em = emission_of(face, tables);
   HorizonSum8 h;
   horizon_begin8(&h, &em);
   const int m = face.vertexCount;
-  float4 q = tables->sourceVertices[face.firstVertex];
-  float8 ax = q.x - px, ay = q.y - py, az = q.z - pz;
+  float8 ax, ay, az, bx, by, bz;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
   float8 ha = nx * ax + ny * ay + nz * az;
   for (int i = 0; i < m; ++i) {
-    q = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)];
-    horizon_next8(&h, &ax, &ay, &az, &ha, q.x - px, q.y - py, q.z - pz, nx, ny, nz);
+    pn_from8(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], pts, &bx, &by,
+             &bz);
+    horizon_next8(&h, &ax, &ay, &az, &ha, bx, by, bz, nx, ny, nz);
   }
   float8 sum = horizon_end8(&h, nx, ny, nz);
-  return select((float8)(0.0f), sum, in_front8(face, px, py, pz));
+  return select((float8)(0.0f), sum, in_front8(face, pts->px, pts->py, pts->pz));
 }

@@ -4,12 +4,6 @@
 #include "lane_edges.cl"
 #include "occluders.cl"
 
-/* The work-item's eight points: positions, unit normals and the solid each lies on. */
-typedef struct {
-  float8 px, py, pz, nx, ny, nz;
-  int8 own;
-} Points8;
-
 /* A source face as the lanes see it: the face, the patch's entry for it and, for the lanes in
  * view.use, the rectangle of it they see through its aperture. */
 typedef struct {
@@ -41,10 +35,7 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   s->m = m;
   s->emission = emission_of(face, tables);
   for (int i = 0; i < m; ++i) {
-    float4 q = tables->sourceVertices[face.firstVertex + i];
-    s->x[i] = q.x - px;
-    s->y[i] = q.y - py;
-    s->z[i] = q.z - pz;
+    pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &s->x[i], &s->y[i], &s->z[i]);
     if (pn_any(fv->view.use)) {
       float8 cx, cy, cz;
       aperture_corner8(fv->view, fv->ap, face.plane, i, &cx, &cy, &cz);
@@ -158,10 +149,9 @@ void gather_occluders8(Contours8* cs, const SourcePolygon8* s, const Points8* pt
         full = true;
         break;
       }
-      float4 f = tables->occluderVertices[o.firstVertex + ed.x],
-             g = tables->occluderVertices[o.firstVertex + ed.y];
-      float8 fx = f.x - px, fy = f.y - py, fz = f.z - pz;
-      float8 gx = g.x - px, gy = g.y - py, gz = g.z - pz;
+      float8 fx, fy, fz, gx, gy, gz;
+      pn_from8(tables->occluderVertices[o.firstVertex + ed.x], pts, &fx, &fy, &fz);
+      pn_from8(tables->occluderVertices[o.firstVertex + ed.y], pts, &gx, &gy, &gz);
       EdgePlane8* ep = &cs->plane[c];
       ContourEdge8* e = &cs->edge[c++];
       /* run as the face that does not see P does (contour_edge) */
@@ -215,7 +205,7 @@ void drop_hidden8(Contours8* cs, const Points8* pts, const PnSceneTables* tables
         const EdgePlane8* e = &cs->plane[k];
         if (!pn_any(hidden & e->on)) continue;
         for (int q = 0; q < ou.vertexCount && pn_any(hidden); ++q) {
-          float4 x = tables->occluderVertices[ou.firstVertex + q];
+          float4 x = tables->occluderVertices[ou.firstVertex + q].hi;
           hidden &=
               ~e->on | (e->mx * (x.x - px) + e->my * (x.y - py) + e->mz * (x.z - pz) > eps_length);
         }

@@ -86,9 +86,9 @@ inline bool sphere_outside_pyramid(float3 p, float3 n, PnOccluder o, PnSourceFac
   float r = o.bound.w;
   if (dot(n, c) < -r) return true;
   const int m = face.vertexCount;
-  float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
+  float3 a = tables->sourceVertices[face.firstVertex].hi.xyz - p;
   for (int i = 0; i < m; ++i) {
-    float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+    float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].hi.xyz - p;
     /* inside the pyramid: cross(a, b)·x < 0 for every side (see the orientation note below) */
     float3 side = cross(a, b);
     if (dot(side, c) > r * length(side)) return true;
@@ -113,7 +113,7 @@ bool outside_source_pyramid(const PenumbraState* st, float3 p, float3 n, PnOcclu
     float3 m = st->source_side[i]; /* a zero normal (no plane) never has the vertices outside */
     bool out = true;
     for (int k = 0; k < o.vertexCount && out; ++k)
-      out = dot(m, tables->occluderVertices[o.firstVertex + k].xyz - p) > eps_length;
+      out = dot(m, tables->occluderVertices[o.firstVertex + k].hi.xyz - p) > eps_length;
     if (out) return true;
   }
   return false;
@@ -266,9 +266,10 @@ float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX
   return sum.s + sum.c;
 }
 
-/* S' for P: the face (or, `aperture`, the visible rectangle in `corners`) clipped by the horizon
- * plane through P (Sutherland–Hodgman), with its side normals. False where P sees nothing of it. */
-bool source_polygon(PenumbraState* st, float3 p, float3 n, PnSourceFace face,
+/* S' for P (p, p_lo: PnPosition): the face (or, `aperture`, the visible rectangle in `corners`)
+ * clipped by the horizon plane through P (Sutherland–Hodgman), with its side normals. False where
+ * P sees nothing of it. */
+bool source_polygon(PenumbraState* st, float3 p, float3 p_lo, float3 n, PnSourceFace face,
                     const PnSceneTables* tables, bool aperture, const float3* corners) {
   st->source_count = 0;
   st->emission = emission_of(face, tables);
@@ -278,10 +279,11 @@ bool source_polygon(PenumbraState* st, float3 p, float3 n, PnSourceFace face,
     clip_source(st, n);
   } else {
     const int m = face.vertexCount;
-    float3 a = tables->sourceVertices[face.firstVertex].xyz - p;
+    float3 a = pn_from1(tables->sourceVertices[face.firstVertex], p, p_lo);
     float ha = dot(n, a);
     for (int i = 0; i < m; ++i) {
-      float3 b = tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)].xyz - p;
+      float3 b =
+          pn_from1(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], p, p_lo);
       float hb = dot(n, b);
       if (ha >= 0.0f) st->source[st->source_count++] = a;
       if ((ha >= 0.0f) != (hb >= 0.0f))
@@ -307,12 +309,12 @@ bool source_polygon(PenumbraState* st, float3 p, float3 n, PnSourceFace face,
 }
 
 /* Adds occluder o, active at P, with its contour edges. */
-void add_contour(PenumbraState* st, PnOccluder o, float3 p, const PnSceneTables* tables,
-                 float eps_length, int* error) {
+void add_contour(PenumbraState* st, PnOccluder o, float3 p, float3 p_lo,
+                 const PnSceneTables* tables, float eps_length, int* error) {
   int c = st->first_contour[st->active_count];
   for (int e = 0; e < o.edgeCount; ++e) {
     float3 ea, eb;
-    if (!contour_edge(e, o, p, tables, eps_length, &ea, &eb)) continue;
+    if (!contour_edge(e, o, p, p_lo, tables, eps_length, &ea, &eb)) continue;
     if (c == PN_MAX_CONTOUR_EDGES) {
       *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
       break;
@@ -326,14 +328,15 @@ void add_contour(PenumbraState* st, PnOccluder o, float3 p, const PnSceneTables*
   st->first_contour[st->active_count] = c;
 }
 
-/* `aperture`: P sees the face through its aperture (host/shadow/aperture.hpp); `corners` then
- * holds the visible rectangle relative to P, and occluders behind the aperture are skipped. */
-float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace pf, bool culling,
-                    const PnSceneTables* tables, float eps_length, bool aperture,
+/* P's position is p + p_lo (PnPosition: plane tests read p). `aperture`: P sees the face through
+ * its aperture (host/shadow/aperture.hpp); `corners` then holds the visible rectangle relative to
+ * P, and occluders behind the aperture are skipped. */
+float penumbra_face(float3 p, float3 p_lo, float3 n, int own, PnSourceFace face, PnPatchFace pf,
+                    bool culling, const PnSceneTables* tables, float eps_length, bool aperture,
                     const float3* corners, int* error) {
   PenumbraState st;
   if (!in_front1(face, p.x, p.y, p.z) ||
-      !source_polygon(&st, p, n, face, tables, aperture, corners))
+      !source_polygon(&st, p, p_lo, n, face, tables, aperture, corners))
     return 0.0f;
 
   /* One pass over the patch's occluders: those with a face that sees P are candidates (unless
@@ -386,7 +389,7 @@ float penumbra_face(float3 p, float3 n, int own, PnSourceFace face, PnPatchFace 
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
     }
-    add_contour(&st, o, p, tables, eps_length, error);
+    add_contour(&st, o, p, p_lo, tables, eps_length, error);
   }
 
   const float sum = wedges == 0 ? region_sum(&st, n, error)

@@ -11,12 +11,12 @@
  * the functions that read them. */
 typedef struct {
   __global const PnSourceFace* faces;
-  __global const float4* sourceVertices;
+  __global const PnPosition* sourceVertices;
   __global const PnLuminancePolynomial* luminances; /* PnSourceFace::luminance indexes these */
   __global const PnOccluder* occluders;
   __global const float4* planes; /* occluder faces, separating, penumbra and umbra planes */
   __global const int4* edges;    /* per occluder: (from, to, left face, right face) */
-  __global const float4* occluderVertices;
+  __global const PnPosition* occluderVertices;
   __global const PnAperture* apertures;
   __global const PnPatchFace* patchFaces; /* [work-item][face] */
   __global const int* candidates;         /* occluder indices, listed by PnPatchFace */
@@ -87,6 +87,27 @@ PN_DEFINE_SUM(float8, PnSum8, pn_sum_add8) /* and for eight lanes */
 PN_DEFINE_PLANE_TESTS(float, int, 1)
 PN_DEFINE_PLANE_TESTS(float8, int8, 8)
 #undef PN_DEFINE_PLANE_TESTS
+
+/* The work-item's eight points: positions (hi parts in px, py, pz, what plane tests read; lo
+ * parts in lx, ly, lz: PnPosition), unit normals and the solid each lies on. */
+typedef struct {
+  float8 px, py, pz, lx, ly, lz, nx, ny, nz;
+  int8 own;
+} Points8;
+
+/* q − P for a position q of the scene's tables and a point P, both double-float (PnPosition):
+ * (q.hi − P.hi) + (q.lo − P.lo), per coordinate. The first difference is exact where q and P are
+ * within a factor 2 of each other, so the result is good to one rounding of itself however far
+ * from the origin both lie. Written for one point and, per coordinate, for eight lanes (the same
+ * operations, so both paths read the same bits). */
+inline float3 pn_from1(PnPosition q, float3 p, float3 p_lo) {
+  return (q.hi.xyz - p) + (q.lo.xyz - p_lo);
+}
+inline void pn_from8(PnPosition q, const Points8* pts, float8* x, float8* y, float8* z) {
+  *x = (q.hi.x - pts->px) + (q.lo.x - pts->lx);
+  *y = (q.hi.y - pts->py) + (q.lo.y - pts->ly);
+  *z = (q.hi.z - pts->pz) + (q.lo.z - pts->lz);
+}
 
 /* a·b written out as the eight-lane code writes its dot products (contracted into fma the same
  * way; dot() rounds differently), for the scalar tests that must read what the lane tests read. */

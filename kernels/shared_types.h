@@ -33,6 +33,18 @@ typedef cl_int4 pn_int4;
 #define PN_ERROR_TOO_MANY_CONTACTS 4
 #define PN_ERROR_TOO_MANY_CONTOUR_EDGES 8
 
+/* A position relative to the kernel's origin as a pair of floats (double-float): hi is the
+ * position rounded to float, lo what that rounding left, rounded to float, so hi + lo carries it to
+ * about 2^-48 of its size. Receiving points and the vertices of sources and occluders come this
+ * way: a difference q − p is formed as (q.hi − p.hi) + (q.lo − p.lo), where the first difference
+ * is exact whenever q and p are within a factor 2 of each other (Sterbenz), so a point 1 mm from a
+ * shelf's edge 30 m from the origin sees that edge to float's precision of the 1 mm, not of the
+ * 30 m. Plane tests read hi alone (their tolerance covers it, prelude.cl). */
+typedef struct {
+  pn_float4 hi; /* xyz; w 0 */
+  pn_float4 lo; /* xyz; w 0 */
+} PnPosition;
+
 /* One emitting convex polygon: a polygon source, or one face of a polyhedron source. Its
  * vertices run counter-clockwise about the emission direction. */
 typedef struct {

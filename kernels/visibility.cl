@@ -3,6 +3,10 @@
 /* Primary visibility (Nishita §2.2 step ii, done per sample rather than by scanline polygon
  * sorting): for every sample of the image, the nearest face a ray from the eye meets.
  *
+ * Positions are relative to the eye: rays start at the origin, and the host passes every plane
+ * as n·(x − eye) = w − n·eye, formed in double (render/visibility_engine.cpp), so that float
+ * resolves what lies near the eye however far the scene's coordinates are from their origin.
+ *
  * Samples form a W × H grid (pixels × supersampling, row-major, row 0 at the top). The ray of
  * sample (X, Y) is forward + sx·right + sy·up with sx, sy in (-1, 1) at the sample's centre;
  * right and up are pre-scaled by the field of view on the host. The host bins objects into
@@ -64,17 +68,17 @@ static int hit_polygon(float3 o, float3 d, __global const float4* planes, int fi
   return 0;
 }
 
-__kernel void visibility(const float4 eye, const float4 forward, const float4 right,
-                         const float4 up, const int width, const int height, const int tiles_across,
-                         __global const int* tile_start, __global const int* tile_objects,
-                         __global const PnVisibleObject* objects, __global const float4* planes,
-                         __global uint* face_ids, __global float* t_out) {
+__kernel void visibility(const float4 forward, const float4 right, const float4 up, const int width,
+                         const int height, const int tiles_across, __global const int* tile_start,
+                         __global const int* tile_objects, __global const PnVisibleObject* objects,
+                         __global const float4* planes, __global uint* face_ids,
+                         __global float* t_out) {
   const int g = (int)get_global_id(0);
   if (g >= width * height) return;
   const int x = g % width, y = g / width;
   const float sx = 2.0f * ((float)x + 0.5f) / (float)width - 1.0f;
   const float sy = 1.0f - 2.0f * ((float)y + 0.5f) / (float)height;
-  const float3 o = eye.xyz;
+  const float3 o = (float3)(0.0f); /* the eye */
   const float3 d = forward.xyz + sx * right.xyz + sy * up.xyz;
 
   const int tile = (y / PN_VISIBILITY_TILE) * tiles_across + x / PN_VISIBILITY_TILE;

@@ -108,13 +108,43 @@ TEST(DegenerateGeometry, PointOnASolidsCornerOrEdgeSeesPastItsWedge) {
   }
 }
 
+// Points beside the thin boxes (10 mm or less) of a configuration: 1 mm off each of their two
+// broad faces, 2 cm in from each corner of it, facing the centre of the first source, where the
+// box's edges cut across the source as the point sees it.
+std::vector<SamplePoint> besideTheThinBoxes(const Scene& scene) {
+  constexpr double kThin = 0.0101, kOff = 1e-3, kIn = 0.02;  // m
+  std::vector<SamplePoint> points;
+  if (scene.sources.empty()) return points;
+  const Vec3 target = scene.sources.front().faces.front().centroid();
+  for (const Solid& solid : scene.solids) {
+    if (solid.shape.thickness() > kThin) continue;
+    for (int f = 0; f < static_cast<int>(solid.shape.faces().size()); ++f) {
+      const Plane& plane = solid.shape.faces()[f].plane;
+      // A broad face: the box ends within its thickness behind the face's plane.
+      double depth = 0.0;
+      for (const Vec3& v : solid.shape.vertices())
+        depth = std::max(depth, -plane.signedDistance(v));
+      if (depth > kThin) continue;
+      const ConvexPolygon face = solid.shape.facePolygon(f);
+      const Vec3 centre = face.centroid();
+      for (const Vec3& corner : face.vertices()) {
+        const Vec3 inwards = centre - corner;
+        const Vec3 p = corner + inwards * std::min(1.0, kIn / inwards.norm()) + kOff * plane.normal;
+        points.push_back({p, (target - p).normalized(), -1});
+      }
+    }
+  }
+  return points;
+}
+
 // The same configurations in a large scene: a 1 m cube 100 m away along x puts the kernel's
 // origin (the centre of the geometry) about 50 m from them, and the thin boxes are 10 mm thick,
-// 200 of the kernel's length tolerances there (Tolerance::kernelLength: 50 µm). Each point
-// is held to the exact reference (exactIlluminance, double) within the stress criterion, the
-// bound the suite holds the sampled reference to, and, where it lies 5 mm or more from every
-// box (beside a thin box, not on one), within Tolerance::kKernelRelative · E_unoccluded, as at
-// the scene's centre.
+// 200 of the kernel's length tolerances there (Tolerance::kernelLength: 50 µm). Every point,
+// on a box, beside one or clear of them, is held to the exact reference (exactIlluminance,
+// double) within Tolerance::kKernelRelative · E_unoccluded + ε, as at the scene's centre; so are
+// points 1 mm beside the thin boxes, 2 cm from their edges (besideTheThinBoxes), which float
+// positions alone would miss (50 m out floats are 3.8e-6 m apart: a sight line to an edge 2 cm
+// away turns by up to 1e-4); points and vertices reach the kernel as pairs of floats.
 TEST(DegenerateGeometry, ThinBoxesFiftyMetresFromTheCentreAgreeWithTheExactReference) {
   constexpr std::uint64_t kSeed = 1;
   constexpr long kConfigurations = 300;
@@ -122,11 +152,14 @@ TEST(DegenerateGeometry, ThinBoxesFiftyMetresFromTheCentreAgreeWithTheExactRefer
   bench::DegenerateCase first = bench::DegenerateGenerator::make(kSeed, 0);
   IlluminanceEngine engine(testing::cpuDevice(), first.scene);
   IlluminanceEngine open(testing::cpuDevice(), first.scene);
-  double worst = 0.0, worstClear = 0.0;
-  long points = 0, clear = 0, thin = 0;
+  double worst = 0.0, worstBeside = 0.0;
+  long points = 0, besideCount = 0, besideShaded = 0, thin = 0;
   for (long i = 0; i < kConfigurations; ++i) {
     bench::DegenerateCase c = bench::DegenerateGenerator::make(kSeed, i);
     thin += c.description.find("thin box") != std::string::npos;
+    const std::vector<SamplePoint> beside = besideTheThinBoxes(c.scene);
+    const std::size_t firstBeside = c.points.size();
+    c.points.insert(c.points.end(), beside.begin(), beside.end());
     c.scene.solids.push_back(anchor);
     ASSERT_GT(c.scene.kernelOrigin().x(), 45.0) << c.description;
     Scene unoccluded = c.scene;
@@ -143,35 +176,31 @@ TEST(DegenerateGeometry, ThinBoxesFiftyMetresFromTheCentreAgreeWithTheExactRefer
     for (std::size_t k = 0; k < c.points.size(); ++k) {
       const Vec3& p = c.points[k].position;
       bool inside = false;
-      double nearest = std::numeric_limits<double>::infinity();
-      for (const Solid& solid : c.scene.solids) {
+      for (const Solid& solid : c.scene.solids)
         inside = inside || solid.shape.containsStrictly(p, inputTolerance);
-        double outside = -std::numeric_limits<double>::infinity();
-        for (const auto& face : solid.shape.faces())
-          outside = std::max(outside, face.plane.signedDistance(p));
-        nearest = std::min(nearest, std::abs(outside));
-      }
       if (inside) continue;
       ++points;
       const double error = std::abs(e[k] - exact[k]);
-      EXPECT_LE(error, bench::kStressReferenceTolerance * u[k] + floor)
-          << "point " << k << " of [" << c.description << "]: E " << e[k] << " lx, exact "
-          << exact[k] << " lx, unoccluded " << u[k] << " lx";
+      EXPECT_LE(error, Tolerance::kKernelRelative * u[k] + floor)
+          << "point " << k << (k >= firstBeside ? " (beside a thin box)" : "") << " of ["
+          << c.description << "]: E " << e[k] << " lx, exact " << exact[k] << " lx, unoccluded "
+          << u[k] << " lx";
       if (u[k] > floor) worst = std::max(worst, error / u[k]);
-      if (nearest >= 5e-3) {
-        ++clear;
-        EXPECT_LE(error, Tolerance::kKernelRelative * u[k] + floor)
-            << "point " << k << " (clear of every box) of [" << c.description << "]: E " << e[k]
-            << " lx, exact " << exact[k] << " lx, unoccluded " << u[k] << " lx";
-        if (u[k] > floor) worstClear = std::max(worstClear, error / u[k]);
+      if (k >= firstBeside) {
+        ++besideCount;
+        besideShaded += exact[k] < 0.99 * u[k];
+        if (u[k] > floor) worstBeside = std::max(worstBeside, error / u[k]);
       }
     }
   }
   EXPECT_GT(thin, 0);
+  // The points beside the thin boxes see their edges cut across the source: most are shaded.
+  EXPECT_GT(besideShaded, besideCount / 2);
   std::printf(
-      "  %ld configurations (%ld with a 10 mm box) 50 m from the centre, %ld points: worst |E - "
-      "E_exact| / E_unoccluded %.2e, %.2e at the %ld points 5 mm or more from every box\n",
-      kConfigurations, thin, points, worst, worstClear, clear);
+      "  %ld configurations (%ld with a 10 mm box) 50 m from the centre, %ld points (%ld 1 mm "
+      "beside a thin box, %ld of them shaded): worst |E - E_exact| / E_unoccluded %.2e, %.2e "
+      "beside the thin boxes\n",
+      kConfigurations, thin, points, besideCount, besideShaded, worst, worstBeside);
 }
 
 // The generator covers what it claims: each kind of box and point occurs in the first 300.

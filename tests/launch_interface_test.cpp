@@ -4,6 +4,7 @@
 // order the host binds them (engine/kernel_scene.hpp).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <string>
@@ -36,6 +37,8 @@ std::vector<int> hostLayout(const PnLaunchParams& params) {
       static_cast<int>(sizeof(PnLuminancePolynomial)),
       static_cast<int>(offsetof(PnLuminancePolynomial, coefficient)),
       static_cast<int>(offsetof(PnLuminancePolynomial, order)),
+      static_cast<int>(sizeof(PnPosition)),
+      static_cast<int>(offsetof(PnPosition, lo)),
   };
   int eps = 0;
   std::memcpy(&eps, &params.epsLength, sizeof eps);
@@ -68,6 +71,24 @@ TEST(LaunchInterface, StructLayoutsAndParamsAgreeWithTheKernel) {
       << "kernels/interface_layout.cl and this test list different fields";
   const std::vector<int> device_layout(written.begin() + 1, written.begin() + 1 + count);
   EXPECT_EQ(device_layout, expected);
+}
+
+// Positions cross as double-float pairs (PnPosition): hi + lo carries x − origin to about 2^-48
+// of its size, where hi alone is off by up to half a float spacing (1e-6 m at 30 m).
+TEST(LaunchInterface, PositionsCrossAsHiAndLoPartsThatCarryTheDouble) {
+  const Vec3 origin(30.0, 15.0, 1.5);
+  for (const Vec3& x : {Vec3(58.049, 27.499, 1.0018), Vec3(2.6500000000000004, 2.35, 0.8),
+                        Vec3(-1234.5678, 0.1, 1e-3)}) {
+    const PnPosition p = toPosition(x, origin);
+    for (int k = 0; k < 3; ++k) {
+      const double d = x[k] - origin[k];
+      const double hi = p.hi.s[k], lo = p.lo.s[k];
+      const volatile float rounded = static_cast<float>(d);  // (toPosition says why volatile)
+      EXPECT_EQ(hi, static_cast<double>(rounded)) << "coordinate " << k;
+      EXPECT_LE(std::abs(lo), 0.5 * std::abs(hi) * 0x1p-23) << "coordinate " << k;
+      EXPECT_LE(std::abs(hi + lo - d), std::abs(d) * 0x1p-47) << "coordinate " << k;
+    }
+  }
 }
 
 TEST(LaunchInterface, KernelArgumentsAreTheHostBindingInOrder) {

@@ -147,6 +147,51 @@ TEST(Visibility, ObjectsBehindTheEyeAreNeverHitAndTheEyeMayBeAmongThem) {
   EXPECT_EQ(mismatches, 0);
 }
 
+// Thin solids far from the origin of the scene's coordinates: a 60 × 30 m floor in site
+// coordinates (its corner at (2 600 000, 1 200 000) m, a national grid's), with 18 mm shelves
+// and a 10 mm glass pane in the corner 28 m from the floor's centre, seen from 1.5 m away. The
+// kernel traces from the eye (planes relative to it, formed in double), so float resolves the
+// boards' faces to 1e-7 m there; per sample, the solid it sees is the one a ray cast in double
+// sees, but for ties within 1e-5 of the distance (a ray grazing an edge).
+TEST(Visibility, AThinShelfFarFromTheCentreInSiteCoordinatesMatchesTheHostRayCast) {
+  const Vec3 site(2.6e6, 1.2e6, 400.0);
+  const auto box = [&](const Vec3& lo, const Vec3& hi, const char* name) {
+    return boxSolid(site + lo, site + hi, name);
+  };
+  Scene scene;
+  scene.solids = {box({0, 0, -0.2}, {60, 30, 0}, "floor"),
+                  box({56.0, 26.5, 0.9}, {57.0, 26.9, 0.918}, "shelf-low"),
+                  box({56.0, 26.5, 1.2}, {57.0, 26.9, 1.218}, "shelf-high"),
+                  box({56.0, 26.5, 1.5}, {57.0, 26.9, 1.518}, "shelf-top"),
+                  box({57.0, 25.6, 0.0}, {57.01, 26.9, 1.6}, "glass")};
+  const View view =
+      makeView(site + Vec3(55.2, 25.2, 1.45), site + Vec3(56.6, 26.6, 1.05), 240, 160, 60.0);
+  const Camera camera = Camera::forView(view);
+  VisibilityEngine engine(cpuDevice(), scene);
+  const VisibilityImage image = engine.trace(camera);
+  const auto solidOf = [&](uint32_t id) { return id == 0 ? -1 : engine.visible().face(id).index; };
+  int mismatches = 0, ties = 0, boards = 0;
+  for (int y = 0; y < camera.height; ++y)
+    for (int x = 0; x < camera.width; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y) * camera.width + x;
+      const HostHit host = castRay(scene, camera.eye, camera.direction(x, y));
+      const int seen = solidOf(host.id);
+      boards += seen >= 1;
+      if (solidOf(image.faceIds[i]) == seen) continue;
+      const double band = 1e-5 * host.t;
+      const bool tie = host.edgeDistance <= band || std::abs(image.t[i] - host.t) <= band;
+      ties += tie;
+      mismatches += !tie;
+    }
+  EXPECT_EQ(mismatches, 0);
+  // The view looks at the boards: their faces fill a good part of it.
+  EXPECT_GT(boards, camera.width * camera.height / 10);
+  std::printf(
+      "site coordinates: %d samples, %d on the shelves and the glass, %d ties, %d "
+      "mismatches\n",
+      camera.width * camera.height, boards, ties, mismatches);
+}
+
 TEST(RenderedIlluminance, APixelEqualsTheGridValueAtItsPoint) {
   Scene scene = loadScene(PENUMBRA_SOURCE_DIR "/data/office.yaml");
   View view = scene.views.front();

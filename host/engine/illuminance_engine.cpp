@@ -68,12 +68,12 @@ struct IlluminanceEngine::State {
     for (std::size_t b : tables) sceneBytes += b;
     faces = DeviceBuffer::upload<PnSourceFace>(d, packed.faces);
     apertures = DeviceBuffer::upload<PnAperture>(d, packed.apertures);
-    sourceVertices = DeviceBuffer::upload<cl_float4>(d, packed.sourceVertices);
+    sourceVertices = DeviceBuffer::upload<PnPosition>(d, packed.sourceVertices);
     luminances = DeviceBuffer::upload<PnLuminancePolynomial>(d, packed.luminances);
     occluders = DeviceBuffer::upload<PnOccluder>(d, packed.occluders);
     planes = DeviceBuffer::upload<cl_float4>(d, packed.planes);
     edges = DeviceBuffer::upload<cl_int4>(d, packed.edges);
-    occluderVertices = DeviceBuffer::upload<cl_float4>(d, packed.occluderVertices);
+    occluderVertices = DeviceBuffer::upload<PnPosition>(d, packed.occluderVertices);
     // The device holds its copy; the host keeps what the patch tables and launches read.
     packed.occluders = {};
     packed.planes = {};
@@ -242,16 +242,20 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
     }
   }
   const std::size_t links = linked ? linked->faces.size() : 0;
-  // Structure of arrays, one float8 lane per point. Padding repeats the last point.
-  std::vector<float> coords[6];
+  // Structure of arrays, one float8 lane per point: the position's hi parts, its lo parts
+  // (toPosition), the normal. Padding repeats the last point.
+  constexpr int kPointArrays = 9;
+  std::vector<float> coords[kPointArrays];
   for (auto& c : coords) c.resize(padded);
   std::vector<cl_int> own(padded);
   const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
   for (std::size_t i = 0; i < padded; ++i) {
     const SamplePoint& p = points[std::min(i, n - 1)];
+    const PnPosition position = toPosition(p.position, origin);
     for (int k = 0; k < 3; ++k) {
-      coords[k][i] = static_cast<float>(p.position[k] - origin[k]);
-      coords[3 + k][i] = static_cast<float>(p.normal[k]);
+      coords[k][i] = position.hi.s[k];
+      coords[3 + k][i] = position.lo.s[k];
+      coords[6 + k][i] = static_cast<float>(p.normal[k]);
     }
     own[i] = p.solid;
   }
@@ -270,20 +274,11 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
                                 : bySource ? padded * std::max(sourceCount, 1)
                                            : padded;
   const std::size_t classBytes = padded * std::max(sourceCount, 1);
-  const std::vector<std::size_t> batch = {padded * sizeof(float),
-                                          padded * sizeof(float),
-                                          padded * sizeof(float),
-                                          padded * sizeof(float),
-                                          padded * sizeof(float),
-                                          padded * sizeof(float),
-                                          padded * sizeof(cl_int),
-                                          compute::byteSize(table.entries),
-                                          compute::byteSize(table.candidates),
-                                          compute::byteSize(linkStart),
-                                          links * sizeof(cl_int),
-                                          outValues * sizeof(float),
-                                          workItems * sizeof(cl_int),
-                                          classBytes};
+  std::vector<std::size_t> batch(kPointArrays, padded * sizeof(float));
+  batch.insert(batch.end(), {padded * sizeof(cl_int), compute::byteSize(table.entries),
+                             compute::byteSize(table.candidates), compute::byteSize(linkStart),
+                             links * sizeof(cl_int), outValues * sizeof(float),
+                             workItems * sizeof(cl_int), classBytes});
   if (!compute::fitsDevice(d.info(), batch, state_->sceneBytes)) {
     // Too many points for the device at once: halves cut on a work-group boundary give the same
     // work-items, and so the same values, as one launch would.
@@ -313,8 +308,9 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
         "even the smallest batch does not fit beside the scene; use a smaller scene or a device "
         "with more memory (--device)");
   }
-  DeviceBuffer pointBuffers[6];
-  for (int k = 0; k < 6; ++k) pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
+  DeviceBuffer pointBuffers[kPointArrays];
+  for (int k = 0; k < kPointArrays; ++k)
+    pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
   DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
   DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
   DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
@@ -341,9 +337,12 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   buffers.pointX = &pointBuffers[0];
   buffers.pointY = &pointBuffers[1];
   buffers.pointZ = &pointBuffers[2];
-  buffers.normalX = &pointBuffers[3];
-  buffers.normalY = &pointBuffers[4];
-  buffers.normalZ = &pointBuffers[5];
+  buffers.pointXLo = &pointBuffers[3];
+  buffers.pointYLo = &pointBuffers[4];
+  buffers.pointZLo = &pointBuffers[5];
+  buffers.normalX = &pointBuffers[6];
+  buffers.normalY = &pointBuffers[7];
+  buffers.normalZ = &pointBuffers[8];
   buffers.pointSolid = &ownBuffer;
   buffers.faces = &state_->faces;
   buffers.sourceVertices = &state_->sourceVertices;

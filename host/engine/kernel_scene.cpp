@@ -14,6 +14,7 @@ static_assert(sizeof(PnLuminancePolynomial) == 80,
               "PnLuminancePolynomial layout must match kernels/shared_types.h");
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
 static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
+static_assert(sizeof(PnPosition) == 32, "PnPosition layout must match kernels/shared_types.h");
 static_assert(sizeof(PnPatchFace) == 16, "PnPatchFace layout must match kernels/shared_types.h");
 static_assert(sizeof(PnLaunchParams) == 32,
               "PnLaunchParams layout must match kernels/shared_types.h");
@@ -36,6 +37,7 @@ cl_float4 toFloat4(const Vec3& v, double w = 0.0) {
 struct Relative {
   Vec3 origin;
   cl_float4 point(const Vec3& x, double w = 0.0) const { return toFloat4(x - origin, w); }
+  PnPosition position(const Vec3& x) const { return toPosition(x, origin); }
   cl_float4 plane(const Plane& p) const {
     return toFloat4(p.normal, p.offset - p.normal.dot(origin));
   }
@@ -140,7 +142,7 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
   const Vec3 centre = shape.centroid();
   double radius = 0.0;
   for (const Vec3& v : shape.vertices()) {
-    packed.occluderVertices.push_back(r.point(v));
+    packed.occluderVertices.push_back(r.position(v));
     radius = std::max(radius, (v - centre).norm());
   }
   // The sphere is a culling bound: grow it by the kernel's tolerance where its farthest point
@@ -161,6 +163,9 @@ constexpr BufferArgument kBufferArguments[] = {
     {"point_x", &IlluminanceBuffers::pointX},
     {"point_y", &IlluminanceBuffers::pointY},
     {"point_z", &IlluminanceBuffers::pointZ},
+    {"point_x_lo", &IlluminanceBuffers::pointXLo},
+    {"point_y_lo", &IlluminanceBuffers::pointYLo},
+    {"point_z_lo", &IlluminanceBuffers::pointZLo},
     {"normal_x", &IlluminanceBuffers::normalX},
     {"normal_y", &IlluminanceBuffers::normalY},
     {"normal_z", &IlluminanceBuffers::normalZ},
@@ -184,6 +189,19 @@ constexpr BufferArgument kBufferArguments[] = {
 constexpr const char* kParamsArgument = "params";
 
 }  // namespace
+
+PnPosition toPosition(const Vec3& x, const Vec3& origin) {
+  const Vec3 d = x - origin;
+  PnPosition p{};
+  for (int k = 0; k < 3; ++k) {
+    // hi is read back through a volatile: GCC 12 at -O2 and -O3 may fold the round trip
+    // double → float → double of vectorised code into nothing, which would leave lo = 0.
+    const volatile float hi = static_cast<float>(d[k]);
+    p.hi.s[k] = hi;
+    p.lo.s[k] = static_cast<float>(d[k] - static_cast<double>(p.hi.s[k]));
+  }
+  return p;
+}
 
 std::string illuminanceBuildOptions() {
   return fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f -DPN_EPS_LENGTH_REL={:.9g}f",
@@ -237,7 +255,7 @@ void packFace(KernelScene& packed, const Scene& scene, const EmittingFaceShadows
   f.plane = r.plane(face.plane());
   f.firstVertex = static_cast<int>(packed.sourceVertices.size());
   f.vertexCount = face.size();
-  for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.point(v));
+  for (const Vec3& v : face.vertices()) packed.sourceVertices.push_back(r.position(v));
   f.halfLuminance = halfLuminanceOf(source);
   f.luminance = packLuminance(source, face, packed);
   f.source = emitting.source;

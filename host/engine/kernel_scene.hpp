@@ -17,7 +17,9 @@ struct KernelScene {
   // Every position the kernel reads is relative to this point, the centre of the bounding box of
   // the scene's geometry (Scene::geometryBounds: solids, sources, luminaires; not the grids, so
   // that where a grid lies moves nothing the kernel resolves) (points too: IlluminanceEngine
-  // subtracts it before rounding them to float).
+  // subtracts it before rounding them to float). Points and the vertices of sources and
+  // occluders, which the kernel subtracts from each other, come as double-float pairs
+  // (PnPosition, toPosition); planes as floats.
   // Float spacing grows with magnitude: in a 12 × 8 m office, coordinates from the room's corner
   // reach 12 m, where floats are 9.5e-7 m apart; from the centre they reach 6 m (4.8e-7 m), and
   // most lie within 4 m (2.4e-7 m). A point 2 cm from a thin solid sees that solid's shadow
@@ -25,18 +27,22 @@ struct KernelScene {
   Vec3 origin = Vec3::Zero();
   std::vector<PnSourceFace> faces;
   std::vector<PnAperture> apertures;  // PnSourceFace::aperture indexes these
-  std::vector<cl_float4> sourceVertices;
+  std::vector<PnPosition> sourceVertices;
   std::vector<PnLuminancePolynomial> luminances;  // PnSourceFace::luminance indexes these
   std::vector<PnOccluder> occluders;              // per face, its casters in SceneShadows order
   // Occluder face planes, separating planes, penumbra planes, umbra planes.
   std::vector<cl_float4> planes;
   std::vector<cl_int4> edges;  // (from, to, left, right), local to their occluder
-  std::vector<cl_float4> occluderVertices;
+  std::vector<PnPosition> occluderVertices;
   // The kernel's length tolerance near the origin (m, Tolerance::kernelLength(0)); at a point it
   // grows with the point's distance from the origin (kernelLengthAt).
   float epsLength = 0.0f;
   int sourceCount = 0;
 };
+
+// x − origin as the kernel reads a position it subtracts from another: hi = float(x − origin),
+// lo = float(x − origin − hi) (kernels/shared_types.h, PnPosition).
+PnPosition toPosition(const Vec3& x, const Vec3& origin);
 
 // The kernel's copy of `shadows`, with the luminance of each face from `scene`, relative to the
 // centre of scene.bounds(). Throws std::runtime_error when a face or solid exceeds the kernel's
@@ -57,12 +63,16 @@ double kernelLengthAt(const KernelScene& packed, std::span<const SamplePoint> po
 std::string illuminanceBuildOptions();
 
 // The buffers of the kernel `illuminance`, one field per __global argument, in its order. Points
-// are structure-of-arrays, padded to whole work-items; the scene's tables come from a
-// KernelScene, the patch table from buildPatchTable; the last three are written.
+// are structure-of-arrays, padded to whole work-items, their positions in hi and lo parts
+// (toPosition); the scene's tables come from a KernelScene, the patch table from
+// buildPatchTable; the last three are written.
 struct IlluminanceBuffers {
   const compute::DeviceBuffer* pointX = nullptr;
   const compute::DeviceBuffer* pointY = nullptr;
   const compute::DeviceBuffer* pointZ = nullptr;
+  const compute::DeviceBuffer* pointXLo = nullptr;
+  const compute::DeviceBuffer* pointYLo = nullptr;
+  const compute::DeviceBuffer* pointZLo = nullptr;
   const compute::DeviceBuffer* normalX = nullptr;
   const compute::DeviceBuffer* normalY = nullptr;
   const compute::DeviceBuffer* normalZ = nullptr;

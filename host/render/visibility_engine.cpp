@@ -13,8 +13,7 @@ struct VisibilityEngine::State {
   compute::Device* device;
   compute::Program program;
   VisibleScene visible;
-  DeviceBuffer objects, planes;
-  double minDepth = 0.0;
+  DeviceBuffer objects;
 
   State(compute::Device& d, const Scene& scene)
       // The illuminance kernel's options: the same relative tolerance (the depth tie rule).
@@ -24,8 +23,6 @@ struct VisibilityEngine::State {
   void upload(const Scene& scene) {
     visible = buildVisibleScene(scene);
     objects = DeviceBuffer::upload<PnVisibleObject>(*device, visible.objects);
-    planes = DeviceBuffer::upload<cl_float4>(*device, visible.planes);
-    minDepth = Tolerance::forSceneSize(scene.size()).length;
   }
 };
 
@@ -47,6 +44,20 @@ std::array<float, 4> float4(const Vec3& v) {
   return {static_cast<float>(v.x()), static_cast<float>(v.y()), static_cast<float>(v.z()), 0.0f};
 }
 
+// The planes relative to the eye, n·(x − eye) = w − n·eye, formed in double and then rounded: the
+// kernel traces from the origin, where float resolves a plane a metre away to 1e-7 m whatever
+// the scene's coordinates (a thin shelf in site coordinates, a kilometre from their origin, keeps
+// its thickness).
+std::vector<cl_float4> planesFromTheEye(const std::vector<Plane>& planes, const Vec3& eye) {
+  std::vector<cl_float4> packed;
+  packed.reserve(planes.size());
+  for (const Plane& p : planes)
+    packed.push_back(cl_float4{{static_cast<float>(p.normal.x()), static_cast<float>(p.normal.y()),
+                                static_cast<float>(p.normal.z()),
+                                static_cast<float>(p.offset - p.normal.dot(eye))}});
+  return packed;
+}
+
 }  // namespace
 
 VisibilityImage VisibilityEngine::trace(const Camera& camera) {
@@ -54,7 +65,9 @@ VisibilityImage VisibilityEngine::trace(const Camera& camera) {
   image.width = camera.width;
   image.height = camera.height;
   const std::size_t samples = static_cast<std::size_t>(camera.width) * camera.height;
-  const ScreenTiles tiles = binObjects(state_->visible, camera, state_->minDepth);
+  // Objects are binned from just in front of the eye: the kernel's length tolerance at its
+  // origin, the eye.
+  const ScreenTiles tiles = binObjects(state_->visible, camera, Tolerance::kernelLength(0.0));
   double scanned = 0.0;
   for (int y = 0; y < camera.height; ++y)
     for (int x = 0; x < camera.width; ++x) {
@@ -66,12 +79,13 @@ VisibilityImage VisibilityEngine::trace(const Camera& camera) {
   compute::Device& d = *state_->device;
   DeviceBuffer tileStart = DeviceBuffer::upload<int>(d, tiles.start);
   DeviceBuffer tileObjects = DeviceBuffer::upload<int>(d, tiles.objects);
+  DeviceBuffer planes =
+      DeviceBuffer::upload<cl_float4>(d, planesFromTheEye(state_->visible.planes, camera.eye));
   DeviceBuffer ids = DeviceBuffer::allocate(d, samples * sizeof(uint32_t));
   DeviceBuffer t = DeviceBuffer::allocate(d, samples * sizeof(float));
   compute::KernelLaunch launch(state_->program, "visibility");
   // Argument order: kernels/visibility.cl.
   unsigned a = 0;
-  launch.arg(a++, float4(camera.eye));
   launch.arg(a++, float4(camera.forward));
   launch.arg(a++, float4(camera.right));
   launch.arg(a++, float4(camera.up));
@@ -81,7 +95,7 @@ VisibilityImage VisibilityEngine::trace(const Camera& camera) {
   launch.arg(a++, tileStart);
   launch.arg(a++, tileObjects);
   launch.arg(a++, state_->objects);
-  launch.arg(a++, state_->planes);
+  launch.arg(a++, planes);
   launch.arg(a++, ids);
   launch.arg(a++, t);
   // A fixed work-group size (see KernelLaunch::run); the kernel skips the padding.

@@ -5,11 +5,6 @@
 namespace penumbra {
 namespace {
 
-cl_float4 packPlane(const Plane& plane) {
-  return cl_float4{{static_cast<float>(plane.normal.x()), static_cast<float>(plane.normal.y()),
-                    static_cast<float>(plane.normal.z()), static_cast<float>(plane.offset)}};
-}
-
 void addObject(VisibleScene& visible, int kind, const std::vector<Plane>& planes,
                std::vector<VisibleFace> faces, std::vector<Vec3> vertices,
                std::vector<std::pair<int, int>> edges) {
@@ -19,7 +14,7 @@ void addObject(VisibleScene& visible, int kind, const std::vector<Plane>& planes
   object.firstFaceId = static_cast<int>(visible.faces.size()) + 1;
   object.kind = kind;
   visible.objects.push_back(object);
-  for (const Plane& plane : planes) visible.planes.push_back(packPlane(plane));
+  visible.planes.insert(visible.planes.end(), planes.begin(), planes.end());
   for (VisibleFace& face : faces) visible.faces.push_back(std::move(face));
   visible.vertices.push_back(std::move(vertices));
   visible.edges.push_back(std::move(edges));

@@ -23,7 +23,8 @@ struct VisibleFace {
 
 struct VisibleScene {
   std::vector<PnVisibleObject> objects;  // solids, then sources
-  std::vector<cl_float4> planes;
+  // In scene coordinates, in double: the engine packs them relative to each camera's eye.
+  std::vector<Plane> planes;
   std::vector<VisibleFace> faces;  // faces[id - 1]
   // Per object: its vertices and its edges (pairs of indices into them), to bin it into the
   // screen tiles it may cover.
