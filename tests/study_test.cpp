@@ -253,7 +253,7 @@ std::vector<CaseRecord> recordsOf(const StudyLayout& layout) {
       GridMetrics m;
       m.eAvg = 100.0 * c.values[0].value + c.values[1].value + 0.1;
       m.u0 = c.values[1].value == 0.0 ? std::numeric_limits<double>::quiet_NaN() : 0.5;
-      r.grids.push_back({grid, m, {}});
+      r.grids.push_back({{m, {}, {}}, grid});
     }
     records.push_back(r);
   }
