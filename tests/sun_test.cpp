@@ -23,6 +23,9 @@
 #include "scene/solar_position.hpp"
 #include "scene_errors.hpp"
 #include "study/case_fingerprint.hpp"
+#include "study/study_cases.hpp"
+#include "study/study_plan.hpp"
+#include "study/study_reader.hpp"
 
 namespace penumbra {
 namespace {
@@ -637,6 +640,35 @@ TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
   // (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
   EXPECT_EQ(read.daylightFactor, (std::vector<double>{2.5, 3.0}));
   EXPECT_EQ(read.daylightFactorDirect, (std::vector<double>{2.0, 2.0}));
+}
+
+// The example orientation study: each case's sun is the first case's turned about the vertical by
+// the case's north_deg (counter-clockwise seen from above), at the same azimuth and elevation,
+// and the study tabulates the sun's metrics after the daylight ones.
+TEST(SunInSweeps, TheOrientationStudyTurnsTheSunAboutTheVertical) {
+  const Study study = loadStudy(PENUMBRA_SOURCE_DIR "/studies/sun-orientation.yaml");
+  const StudyPlan plan = planStudy(study, "kernel", {});
+  ASSERT_EQ(plan.layout.cases.size(), 8u);
+  const std::vector<StudyMetric> expected{
+      StudyMetric::Eavg,    StudyMetric::Emin,    StudyMetric::Emax,    StudyMetric::U0,
+      StudyMetric::Ud,      StudyMetric::DFavg,   StudyMetric::DFmin,   StudyMetric::DFmedian,
+      StudyMetric::EN17037, StudyMetric::EsunAvg, StudyMetric::EsunMax, StudyMetric::SunlitShare};
+  EXPECT_EQ(plan.layout.metrics, expected);
+  const Scene first = loadCaseScene(study, plan.layout.cases.front());
+  ASSERT_TRUE(first.sun);
+  EXPECT_EQ(first.site->northDegrees, 0.0);
+  const Vec3 s = first.sun->direction;
+  for (const PlannedCase& c : plan.layout.cases) {
+    const Scene scene = loadCaseScene(study, c);
+    const double north = c.values.front().value * kRadiansPerDegree;
+    const Vec3 turned(std::cos(north) * s.x() - std::sin(north) * s.y(),
+                      std::sin(north) * s.x() + std::cos(north) * s.y(), s.z());
+    EXPECT_TRUE(scene.sun->direction.isApprox(turned, 1e-12))
+        << c.id << ": " << scene.sun->direction.transpose() << " vs " << turned.transpose();
+    EXPECT_EQ(scene.sun->position.azimuthDegrees, first.sun->position.azimuthDegrees);
+    EXPECT_EQ(scene.sun->position.apparentElevationDegrees,
+              first.sun->position.apparentElevationDegrees);
+  }
 }
 
 }  // namespace
