@@ -253,7 +253,7 @@ std::vector<CaseRecord> recordsOf(const StudyLayout& layout) {
       GridMetrics m;
       m.eAvg = 100.0 * c.values[0].value + c.values[1].value + 0.1;
       m.u0 = c.values[1].value == 0.0 ? std::numeric_limits<double>::quiet_NaN() : 0.5;
-      r.grids.push_back({grid, m, {}});
+      r.grids.push_back({{m, {}, {}}, grid});
     }
     records.push_back(r);
   }
@@ -370,11 +370,16 @@ TEST(SweepFolders, LayoutsAndRecordsReadBackAsWritten) {
   CaseRecord record = recordsOf(layout)[0];
   record.values = {{"b", 0.1 + 0.2}, {"a", 1}};  // order kept, every digit kept
   record.images = {"x.png"};
+  record.grids[0].sun = CaseSun{3452.9814, 22397.717, 100.0 / 3.0};  // every digit kept
   const CaseRecord again =
       caseRecordFromJson(nlohmann::ordered_json::parse(caseJson(record).dump()), "c");
   EXPECT_EQ(again.values, record.values);
   EXPECT_EQ(again.grids[0].metrics.eAvg, record.grids[0].metrics.eAvg);
   EXPECT_TRUE(std::isnan(again.grids[0].metrics.u0));
+  EXPECT_EQ(again.grids[0].sun.eAvg, record.grids[0].sun.eAvg);
+  EXPECT_EQ(again.grids[0].sun.eMax, record.grids[0].sun.eMax);
+  EXPECT_EQ(again.grids[0].sun.sunlitShare, record.grids[0].sun.sunlitShare);
+  EXPECT_TRUE(std::isnan(again.grids[0].daylight.mean));  // no sky: null, read back as NaN
   EXPECT_EQ(again.images, record.images);
   EXPECT_THROW(caseRecordFromJson(nlohmann::ordered_json::parse("{\"id\": 3}"), "c"),
                std::runtime_error);

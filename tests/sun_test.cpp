@@ -23,6 +23,9 @@
 #include "scene/solar_position.hpp"
 #include "scene_errors.hpp"
 #include "study/case_fingerprint.hpp"
+#include "study/study_cases.hpp"
+#include "study/study_plan.hpp"
+#include "study/study_reader.hpp"
 
 namespace penumbra {
 namespace {
@@ -209,6 +212,39 @@ TEST(SunKey, PlacesTheSunAtTheSitesDateAndTime) {
   EXPECT_EQ(later.sun->instant.secondsOfDay, 36030.0);
 }
 
+// `hour:` in decimal hours is the same instant as `time:` in HH:MM:SS, and parameters may give
+// it and north_deg through expressions.
+TEST(SunKey, DecimalHourAndNorthFromParametersPlaceTheSunAsTheClockTimeDoes) {
+  const auto sunWith = [](const std::string& site, const std::string& time,
+                          const ParameterValues& values) {
+    const std::string yaml = "penumbra: 1\nparameters: {hour: 12.0, north: 0.0}\n" + site +
+                             "\nsun: {date: 2026-03-21, " + time +
+                             ", direct_normal_illuminance_lx: 60000}\n"
+                             "solids:\n  - {name: block, box: {min: [0, 0, 0], max: [1, 1, 1]}}\n";
+    const Scene scene = parseScene(yaml, "sun.yaml", values);
+    return *scene.sun;
+  };
+  const std::string fixedSite =
+      "site: {latitude_deg: 51.5, longitude_deg: -0.1, timezone_h: 0, north_deg: 30}";
+  const std::string parameterSite =
+      "site: {latitude_deg: 51.5, longitude_deg: -0.1, timezone_h: 0, north_deg: \"${north}\"}";
+  const Sun clock = sunWith(fixedSite, "time: \"10:45\"", {});
+  const Sun decimal = sunWith(fixedSite, "hour: 10.75", {});
+  EXPECT_EQ(decimal.instant.secondsOfDay, clock.instant.secondsOfDay);  // 10.75 h = 10:45
+  EXPECT_EQ(decimal.position.azimuthDegrees, clock.position.azimuthDegrees);
+  EXPECT_TRUE(decimal.direction.isApprox(clock.direction, 1e-15));
+
+  const Sun swept = sunWith(parameterSite, "hour: \"${hour}\"", {{"hour", 10.75}, {"north", 30.0}});
+  EXPECT_EQ(swept.instant.secondsOfDay, clock.instant.secondsOfDay);
+  EXPECT_TRUE(swept.direction.isApprox(clock.direction, 1e-15));
+  // Turning north by 90° turns the sun's direction about z by 90° (counter-clockwise from above).
+  const Sun turned =
+      sunWith(parameterSite, "hour: \"${hour}\"", {{"hour", 10.75}, {"north", 120.0}});
+  const Vec3 s = clock.direction;
+  EXPECT_TRUE(turned.direction.isApprox(Vec3(-s.y(), s.x(), s.z()), 1e-12))
+      << turned.direction.transpose() << " vs " << s.transpose();
+}
+
 TEST(SunKey, ErrorsNameTheLineAndKey) {
   const struct {
     std::string sun;
@@ -227,6 +263,15 @@ TEST(SunKey, ErrorsNameTheLineAndKey) {
        "sun.direct_normal_illuminance_lx", ""},
       {"sun: {date: 2026-03-21, time: \"10:00\", direct_normal_illuminance_lx: 1, azimuth: 3}",
        "sun", "azimuth"},
+      {"sun: {date: 2026-03-21, hour: 24, direct_normal_illuminance_lx: 1}", "sun.hour",
+       "up to (not including) 24"},
+      {"sun: {date: 2026-03-21, hour: -0.5, direct_normal_illuminance_lx: 1}", "sun.hour",
+       "from 0"},
+      {"sun: {date: 2026-03-21, time: \"10:00\", hour: 10, direct_normal_illuminance_lx: 1}",
+       "sun.hour", "not both"},
+      {"sun: {date: 2026-03-21, direct_normal_illuminance_lx: 1}", "sun.time", "'hour'"},
+      {"sun: {date: 2026-03-21, time: \"${h}:00\", direct_normal_illuminance_lx: 1}", "sun.time",
+       "give 'hour:'"},
   };
   for (const auto& c : cases) {
     const SceneError e = sceneErrorOf(sunScene(c.sun), "sun.yaml");
@@ -595,6 +640,35 @@ TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
   // (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
   EXPECT_EQ(read.daylightFactor, (std::vector<double>{2.5, 3.0}));
   EXPECT_EQ(read.daylightFactorDirect, (std::vector<double>{2.0, 2.0}));
+}
+
+// The example orientation study: each case's sun is the first case's turned about the vertical by
+// the case's north_deg (counter-clockwise seen from above), at the same azimuth and elevation,
+// and the study tabulates the sun's metrics after the daylight ones.
+TEST(SunInSweeps, TheOrientationStudyTurnsTheSunAboutTheVertical) {
+  const Study study = loadStudy(PENUMBRA_SOURCE_DIR "/studies/sun-orientation.yaml");
+  const StudyPlan plan = planStudy(study, "kernel", {});
+  ASSERT_EQ(plan.layout.cases.size(), 8u);
+  const std::vector<StudyMetric> expected{
+      StudyMetric::Eavg,    StudyMetric::Emin,    StudyMetric::Emax,    StudyMetric::U0,
+      StudyMetric::Ud,      StudyMetric::DFavg,   StudyMetric::DFmin,   StudyMetric::DFmedian,
+      StudyMetric::EN17037, StudyMetric::EsunAvg, StudyMetric::EsunMax, StudyMetric::SunlitShare};
+  EXPECT_EQ(plan.layout.metrics, expected);
+  const Scene first = loadCaseScene(study, plan.layout.cases.front());
+  ASSERT_TRUE(first.sun);
+  EXPECT_EQ(first.site->northDegrees, 0.0);
+  const Vec3 s = first.sun->direction;
+  for (const PlannedCase& c : plan.layout.cases) {
+    const Scene scene = loadCaseScene(study, c);
+    const double north = c.values.front().value * kRadiansPerDegree;
+    const Vec3 turned(std::cos(north) * s.x() - std::sin(north) * s.y(),
+                      std::sin(north) * s.x() + std::cos(north) * s.y(), s.z());
+    EXPECT_TRUE(scene.sun->direction.isApprox(turned, 1e-12))
+        << c.id << ": " << scene.sun->direction.transpose() << " vs " << turned.transpose();
+    EXPECT_EQ(scene.sun->position.azimuthDegrees, first.sun->position.azimuthDegrees);
+    EXPECT_EQ(scene.sun->position.apparentElevationDegrees,
+              first.sun->position.apparentElevationDegrees);
+  }
 }
 
 }  // namespace

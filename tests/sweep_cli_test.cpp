@@ -182,6 +182,68 @@ charts: false
   EXPECT_GT(means[1], means[0]);
 }
 
+TEST(SweepCli, SunColumnsEqualTheGridRunsSunlight) {
+  TempDir dir("penumbra-sweep-cli");
+  // The window faces south at north_deg 0 and west at 90; at 10:30 the sun is south-east.
+  write(dir.path() / "scene.yaml", R"(penumbra: 1
+parameters: {north: 0.0, hour: 10.0}
+site: {latitude_deg: 51.5, longitude_deg: -0.1, north_deg: "${north}"}
+sky: {model: cie-overcast, horizontal_illuminance_lx: 10000}
+sun: {date: 2026-03-21, hour: "${hour}", direct_normal_illuminance_lx: 60000}
+room:
+  size: [4, 4, 3]
+  openings:
+    - {name: w, wall: y0, x: 1.0, z: 0.9, width: 2.0, height: 1.5, transmittance: 0.7}
+grids:
+  - {name: floor, height: 0.05, spacing: 0.5, margin: 0.25}
+)");
+  write(dir.path() / "study.yaml", R"(penumbra-study: 1
+scene: scene.yaml
+parameters:
+  north: [0, 90]
+  hour: [10.5]
+charts: false
+)");
+  const Result sweep =
+      runPenumbra(dir.path(), "sweep study.yaml -o out --device cpu --direct-only");
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const auto rows = csvRows(dir.path() / "out" / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const std::vector<std::string> header{
+      "case_id",      "north",       "hour",        "Eavg_lx",         "Emin_lx",
+      "Emax_lx",      "U0",          "Ud",          "DFavg_pct",       "DFmin_pct",
+      "DFmedian_pct", "Esun_avg_lx", "Esun_max_lx", "sunlit_share_pct"};
+  ASSERT_EQ(rows[0], header);
+  std::vector<double> sunlit;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    SCOPED_TRACE(row[0]);
+    const std::string alone = "alone-" + row[0];
+    const Result grid =
+        runPenumbra(dir.path(), "grid scene.yaml -o " + alone +
+                                    " --device cpu -q --direct-only --set north=" + row[1] +
+                                    " --set hour=" + row[2]);
+    ASSERT_EQ(grid.status, 0) << grid.err;
+    const auto summary = nlohmann::json::parse(readText(dir.path() / alone / "summary.json"));
+    const auto& sun = summary["grids"][0]["sun"];
+    const auto& df = summary["grids"][0]["daylight_factor"];
+    EXPECT_EQ(row[8], fmt::format("{}", df["DFavg_pct"].get<double>()));
+    EXPECT_EQ(row[11], fmt::format("{}", sun["Esun_avg_lx"].get<double>()));
+    EXPECT_EQ(row[12], fmt::format("{}", sun["Esun_max_lx"].get<double>()));
+    EXPECT_EQ(row[13], fmt::format("{}", sun["sunlit_share_pct"].get<double>()));
+    // case.json holds the same figures, which the table is rebuilt from.
+    const auto record =
+        nlohmann::json::parse(readText(dir.path() / "out" / "cases" / row[0] / "case.json"));
+    EXPECT_EQ(record["grids"][0]["Esun_avg_lx"], sun["Esun_avg_lx"]);
+    EXPECT_EQ(record["grids"][0]["sunlit_share_pct"], sun["sunlit_share_pct"]);
+    sunlit.push_back(std::stod(row[13]));
+  }
+  std::printf("  sunlit %.1f %% (window facing south), %.1f %% (west)\n", sunlit[0], sunlit[1]);
+  // Facing south the morning sun comes in; facing west it is behind the facade.
+  EXPECT_GT(sunlit[0], 0.0);
+  EXPECT_EQ(sunlit[1], 0.0);
+}
+
 TEST(SweepCli, AKilledRunFinishedByARerunEqualsAnUninterruptedOne) {
   TempDir dir("penumbra-sweep-cli");
   write(dir.path() / "scene.yaml", scene(0.02));  // 300 × 200 points a case

@@ -52,6 +52,11 @@ double readTimeOfDay(const Reader& reader, const Field& field) {
   const std::string text = reader.text(field);
   std::vector<int> g = digitGroups(text, ':', {2, 2});
   if (g.empty()) g = digitGroups(text, ':', {2, 2, 2});
+  if (g.empty() && text.find("${") != std::string::npos)
+    reader.fail(field.where,
+                "a time of day is written \"HH:MM\", not computed; for a time from parameters "
+                "give 'hour:' instead (decimal hours: 10.5 is 10:30), got '" +
+                    text + "'");
   if (g.empty())
     reader.fail(
         field.where,
@@ -62,15 +67,37 @@ double readTimeOfDay(const Reader& reader, const Field& field) {
   return g[0] * 3600.0 + g[1] * 60.0 + g[2];
 }
 
+// `hour: h`, decimal hours in [0, 24): a number, so "${expression}" may give it.
+double readDecimalHour(const Reader& reader, const Field& field) {
+  const double hour = reader.number(field);
+  if (hour < 0.0 || hour >= 24.0)
+    reader.fail(field.where, "the hour is decimal hours from 0 up to (not including) 24, got " +
+                                 formatNumber(hour));
+  return hour * 3600.0;
+}
+
+// The time of day from exactly one of `time` and `hour`, in seconds after midnight.
+double readSecondsOfDay(const Reader& reader, const MapView& map) {
+  const std::optional<Field> time = map.find("time");
+  const std::optional<Field> hour = map.find("hour");
+  if (time && hour)
+    reader.fail(hour->where, "give either 'time' (\"HH:MM\") or 'hour' (decimal), not both");
+  if (hour) return readDecimalHour(reader, *hour);
+  if (!time)
+    reader.fail(Where{map.where().line, childKey(map.where().key, "time")},
+                "missing the time of day: 'time' (\"HH:MM\") or 'hour' (decimal hours)");
+  return readTimeOfDay(reader, map.require("time"));
+}
+
 }  // namespace
 
 SunSpec readSun(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "the sun");
-  map.allowOnly({"date", "time", "direct_normal_illuminance_lx"}, "the sun");
+  map.allowOnly({"date", "time", "hour", "direct_normal_illuminance_lx"}, "the sun");
   SunSpec sun;
   sun.where = field.where;
   sun.date = readDate(reader, map.require("date"));
-  sun.secondsOfDay = readTimeOfDay(reader, map.require("time"));
+  sun.secondsOfDay = readSecondsOfDay(reader, map);
   sun.directNormalIlluminance = reader.positive(map.require("direct_normal_illuminance_lx"), "lx");
   return sun;
 }

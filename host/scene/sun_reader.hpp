@@ -9,6 +9,7 @@ namespace penumbra::scenefile {
 
 // `sun: {date: YYYY-MM-DD, time: "HH:MM" or "HH:MM:SS", direct_normal_illuminance_lx: E_dn}`:
 // a calendar date (the Gregorian calendar), a time of day in the site's standard time, E_dn > 0.
+// `hour: h` (decimal hours in [0, 24), a number that "${expression}" may give) replaces `time`.
 SunSpec readSun(const Reader& reader, const Field& field);
 
 // The sun of `spec` at `site` (NOAA's solar position, north at site.northDegrees); a sun without

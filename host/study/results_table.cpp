@@ -74,9 +74,7 @@ Table buildTable(const StudyLayout& layout, const std::vector<CaseRecord>& recor
     for (const std::string& grid : layout.grids) {
       const CaseGridResult* result = gridOf(r, grid);
       for (StudyMetric m : layout.metrics) {
-        row.push_back(result != nullptr
-                          ? csvNumber(metricValue(result->metrics, result->daylight, m))
-                          : std::string());
+        row.push_back(result != nullptr ? csvNumber(metricValue(*result, m)) : std::string());
       }
     }
     if (rated) row.push_back(r.ugrMax ? csvNumber(*r.ugrMax) : std::string());

@@ -30,8 +30,9 @@ struct Study {
   scenefile::Where combinationWhere;
   std::vector<std::string> grids;  // the scene's grids to compute; empty: all of them
   scenefile::Where gridsWhere;
-  // Table columns and charts. Without `metrics:` in the study: every illuminance metric, and for
-  // a scene with a sky the daylight ones too (planStudy adds them).
+  // Table columns and charts. Without `metrics:` in the study: every illuminance metric, for a
+  // scene with a sky the daylight ones too and for a scene with a sun the sun's (planStudy adds
+  // them).
   std::vector<StudyMetric> metrics;
   bool metricsGiven = false;         // `metrics:` named them
   bool plots = false;                // per-case plots (what `penumbra grid --plot` draws)

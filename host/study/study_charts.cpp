@@ -67,7 +67,7 @@ LineChart chartOf(const StudyLayout& layout, const std::vector<CaseRecord>& reco
     if (!points.count(name)) order.push_back(name);
     auto& series = points[name];
     for (const CaseGridResult& g : r.grids) {
-      const double y = metricValue(g.metrics, g.daylight, metric);
+      const double y = metricValue(g, metric);
       if (g.name == grid && std::isfinite(y)) series.emplace_back(valueOf(r, x), y);
     }
   }

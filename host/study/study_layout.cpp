@@ -113,8 +113,7 @@ OrderedJson caseJson(const CaseRecord& record) {
                         {"points_inside_solids", g.metrics.pointsInsideSolids},
                         {"spacing_m", jsonNumber<OrderedJson>(g.metrics.spacing)}};
     for (const StudyMetricInfo& m : studyMetrics()) {
-      grid[std::string(m.column)] =
-          jsonNumber<OrderedJson>(metricValue(g.metrics, g.daylight, m.metric));
+      grid[std::string(m.column)] = jsonNumber<OrderedJson>(metricValue(g, m.metric));
     }
     grids.push_back(grid);
   }
@@ -146,15 +145,19 @@ CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& fil
       grid.metrics.eMax = numberFromJson(g.at("Emax_lx"));
       grid.metrics.u0 = numberFromJson(g.at("U0"));
       grid.metrics.ud = numberFromJson(g.at("Ud"));
-      // The daylight columns are written for every grid (null without a sky).
-      const auto daylight = [&](StudyMetric m) {
+      // The daylight and sun columns are written for every grid (null without a sky or a sun); a
+      // record without one reads it as NaN.
+      const auto optionalColumn = [&](StudyMetric m) {
         const auto it = g.find(std::string(metricInfo(m).column));
         return it == g.end() ? std::numeric_limits<double>::quiet_NaN() : numberFromJson(*it);
       };
-      grid.daylight.mean = daylight(StudyMetric::DFavg);
-      grid.daylight.min = daylight(StudyMetric::DFmin);
-      grid.daylight.median = daylight(StudyMetric::DFmedian);
-      grid.daylight.level = daylight(StudyMetric::EN17037);
+      grid.daylight.mean = optionalColumn(StudyMetric::DFavg);
+      grid.daylight.min = optionalColumn(StudyMetric::DFmin);
+      grid.daylight.median = optionalColumn(StudyMetric::DFmedian);
+      grid.daylight.level = optionalColumn(StudyMetric::EN17037);
+      grid.sun.eAvg = optionalColumn(StudyMetric::EsunAvg);
+      grid.sun.eMax = optionalColumn(StudyMetric::EsunMax);
+      grid.sun.sunlitShare = optionalColumn(StudyMetric::SunlitShare);
       record.grids.push_back(grid);
     }
     record.images = json.at("images").get<std::vector<std::string>>();

@@ -37,10 +37,8 @@ struct StudyLayout {
   bool sameStudy(const StudyLayout& other) const;
 };
 
-struct CaseGridResult {
+struct CaseGridResult : CaseGridFigures {
   std::string name;
-  GridMetrics metrics;
-  CaseDaylight daylight;  // NaN without a sky
 };
 
 // A finished case, as its case.json says.

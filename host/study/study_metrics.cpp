@@ -11,11 +11,14 @@ const std::vector<StudyMetricInfo>& studyMetrics() {
       {StudyMetric::Emax, "Emax", "lx", "Emax_lx"},
       {StudyMetric::U0, "U0", "", "U0"},
       {StudyMetric::Ud, "Ud", "", "Ud"},
-      {StudyMetric::DFavg, "DFavg", "%", "DFavg_pct", true},
-      {StudyMetric::DFmin, "DFmin", "%", "DFmin_pct", true},
-      {StudyMetric::DFmedian, "DFmedian", "%", "DFmedian_pct", true},
+      {StudyMetric::DFavg, "DFavg", "%", "DFavg_pct", MetricNeeds::Sky},
+      {StudyMetric::DFmin, "DFmin", "%", "DFmin_pct", MetricNeeds::Sky},
+      {StudyMetric::DFmedian, "DFmedian", "%", "DFmedian_pct", MetricNeeds::Sky},
       // 0 none, 1 minimum, 2 medium, 3 high (CaseDaylight::level).
-      {StudyMetric::EN17037, "EN17037_level", "", "EN17037_level", true},
+      {StudyMetric::EN17037, "EN17037_level", "", "EN17037_level", MetricNeeds::Sky},
+      {StudyMetric::EsunAvg, "Esun_avg", "lx", "Esun_avg_lx", MetricNeeds::Sun},
+      {StudyMetric::EsunMax, "Esun_max", "lx", "Esun_max_lx", MetricNeeds::Sun},
+      {StudyMetric::SunlitShare, "sunlit_share", "%", "sunlit_share_pct", MetricNeeds::Sun},
   };
   return metrics;
 }
@@ -46,7 +49,14 @@ CaseDaylight caseDaylight(const DaylightMetrics& daylight) {
   return d;
 }
 
-double metricValue(const GridMetrics& metrics, const CaseDaylight& daylight, StudyMetric metric) {
+CaseSun caseSun(const SunMetrics& sun, NumberDigits digits) {
+  return CaseSun{withDigits(sun.eAvg, digits), withDigits(sun.eMax, digits),
+                 100.0 * sun.sunlitShare};
+}
+
+double metricValue(const CaseGridFigures& figures, StudyMetric metric) {
+  const GridMetrics& metrics = figures.metrics;
+  const CaseDaylight& daylight = figures.daylight;
   switch (metric) {
     case StudyMetric::Eavg:
       return metrics.eAvg;
@@ -66,6 +76,12 @@ double metricValue(const GridMetrics& metrics, const CaseDaylight& daylight, Stu
       return daylight.median;
     case StudyMetric::EN17037:
       return daylight.level;
+    case StudyMetric::EsunAvg:
+      return figures.sun.eAvg;
+    case StudyMetric::EsunMax:
+      return figures.sun.eMax;
+    case StudyMetric::SunlitShare:
+      return figures.sun.sunlitShare;
   }
   return metrics.eAvg;
 }

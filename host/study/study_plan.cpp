@@ -63,12 +63,16 @@ StudyPlan planStudy(const Study& study, const std::string& estimator,
     if (layout.cases.empty()) {
       for (const CalculationGrid* g : selectGrids(scene, study.grids))
         layout.grids.push_back(g->name);
-      if (!study.metricsGiven && scene.sky) {
-        // The EN 17037 level needs the site's median diffuse illuminance.
+      if (!study.metricsGiven) {
+        // The daylight metrics with a sky (the EN 17037 level also needs the site's median
+        // diffuse illuminance), the sun's with a sun.
         const bool verdict = scene.site && scene.site->medianDiffuseIlluminance;
-        for (const StudyMetricInfo& info : studyMetrics())
-          if (info.daylight && (info.metric != StudyMetric::EN17037 || verdict))
-            layout.metrics.push_back(info.metric);
+        for (const StudyMetricInfo& info : studyMetrics()) {
+          const bool given = (info.needs == MetricNeeds::Sky && scene.sky &&
+                              (info.metric != StudyMetric::EN17037 || verdict)) ||
+                             (info.needs == MetricNeeds::Sun && scene.sun);
+          if (given) layout.metrics.push_back(info.metric);
+        }
       }
     }
     planned.fingerprint = caseFingerprint(scene, CaseOutputs{layout.grids, estimator, caseOutputs});

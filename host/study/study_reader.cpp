@@ -156,7 +156,7 @@ Study parseStudy(const std::string& yamlText, const std::filesystem::path& file)
     study.metricsGiven = true;
   } else {
     for (const StudyMetricInfo& info : studyMetrics())
-      if (!info.daylight) study.metrics.push_back(info.metric);
+      if (info.needs == MetricNeeds::Nothing) study.metrics.push_back(info.metric);
   }
   if (const std::optional<Field> p = root.find("plots")) study.plots = readFlag(reader, *p);
   if (const std::optional<Field> c = root.find("charts")) study.charts = readFlag(reader, *c);

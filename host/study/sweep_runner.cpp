@@ -188,9 +188,14 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
     report.totalSeconds = secondsSince(start);
 
     CaseRecord record{c->id, c->fingerprint, c->values, {}, {}, false, std::nullopt};
+    const NumberDigits digits = illuminanceDigits(report);
     for (const GridReport& g : report.grids) {
-      record.grids.push_back({g.name, reportedMetrics(g.metrics, g.kind, illuminanceDigits(report)),
-                              g.daylight ? caseDaylight(*g.daylight) : CaseDaylight{}});
+      CaseGridResult grid;
+      grid.name = g.name;
+      grid.metrics = reportedMetrics(g.metrics, g.kind, digits);
+      if (g.daylight) grid.daylight = caseDaylight(*g.daylight);
+      if (g.sunMetrics) grid.sun = caseSun(*g.sunMetrics, digits);
+      record.grids.push_back(grid);
     }
     if (!scene->observers.empty()) {
       // UGR_max over the observers (docs/glare.md): L_b from the case's interreflection.
