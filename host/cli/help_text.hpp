@@ -123,6 +123,11 @@ inline constexpr const char* kSweepFooter =
     "Nothing is lost: a case folder appears only when complete. Running the same command again\n"
     "skips the finished cases (recomputing those whose scene, values, grids or estimator changed)\n"
     "and rebuilds the tables; after a kill or Ctrl-C, rerun it (or add --resume).\n"
+    "\n"
+    "Renders (`renders:` in the study) are exact (interval 1); --exposure makes them compare,\n"
+    "--display-luminance and --ambient set the display their PNGs are encoded for (part of the\n"
+    "renders' name: a case rendered for another display is rendered again).\n"
+    "\n"
     "With --shard I/N a run computes every N-th case; run the N shards anywhere (GNU parallel,\n"
     "any scheduler: docs/cluster.md) and join their folders with `penumbra merge`.\n"
     "With --slurm --shards N nothing is computed here: OUT/slurm/sweep.sbatch (a job array, one\n"
@@ -244,7 +249,8 @@ inline constexpr const char* kRenderFooter =
     "  <view>.faceid.exr  which face each pixel shows (0: none; solids' faces first, then the\n"
     "                     sources'), for the tone map and for picking\n"
     "  <view>.png         the display image: the HDR luminance tone-mapped by --display\n"
-    "                     (Fang's constraint hierarchy by default; see `penumbra tonemap`)\n"
+    "                     (Fang's constraint hierarchy by default; see `penumbra tonemap`),\n"
+    "                     sRGB-encoded for the display of --display-luminance and --ambient\n"
     "  <view>.tonemap.json  the tone map's statistics (variables, rows, iterations, seconds)\n"
     "  render.json        scene, parameters, device, options, and per view its camera, the\n"
     "                     share of samples computed exactly, and the time of each stage (s)\n"
@@ -281,13 +287,19 @@ inline constexpr const char* kToneMap =
 
 inline constexpr const char* kToneMapFooter =
     "Reads <view>.exr (linear RGB, cd/m2) and <view>.faceid.exr (which face each pixel shows)\n"
-    "as `penumbra render` writes them. Writes the PNG (8-bit drive values, tagged sRGB) and,\n"
-    "beside it, <view>.tonemap.json: variables, rows per level, outer iterations, residual per\n"
-    "level, seconds. Method and defaults: docs/tonemap.md.\n"
+    "as `penumbra render` writes them. Writes the PNG and, beside it, <view>.tonemap.json:\n"
+    "variables, rows per level, outer iterations, residual per level, seconds. Method and\n"
+    "defaults: docs/tonemap.md.\n"
+    "\n"
+    "The PNG holds, per channel, the sRGB code value that shows the tone map's luminance on the\n"
+    "target display: L = (Lmax - Lblack) sRGB(V) + Lblack + 0.01 E_amb / pi, Lmax from\n"
+    "--display-luminance (cd/m2), Lblack = --black x Lmax, E_amb from --ambient (lx, the light on\n"
+    "the screen, whose reflection lifts the display's black). Tagged sRGB (sRGB, gAMA, cHRM).\n"
     "\n"
     "Examples:\n"
     "  penumbra tonemap out/from-door.exr -o out/from-door.png\n"
     "  penumbra tonemap out/from-door.exr --faces out/from-door.faceid.exr -o out/linear.png \\\n"
-    "      --display linear --black 0.05 -v";
+    "      --display linear --black 0.05 -v\n"
+    "  penumbra tonemap out/from-door.exr -o out/bright.png --display-luminance 400 --ambient 500";
 
 }  // namespace penumbra::help
