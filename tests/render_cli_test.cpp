@@ -53,7 +53,9 @@ std::string metadataValue(const fs::path& file, const std::string& name) {
 TEST(RenderCli, WritesEveryFileWithViewAndUnitsInTheHeaders) {
   TempDir dir("penumbra-render-cli");
   writeScene(dir.path());
-  const Result r = runPenumbra(dir.path(), "render scene.yaml --view corner -o out --interval 2");
+  // k = 4: at 64 × 48 the floor's E curves too much within two pixels for k = 2 to interpolate
+  // any (the interval plan's curvature checks compute every sample then).
+  const Result r = runPenumbra(dir.path(), "render scene.yaml --view corner -o out --interval 4");
   if (r.status == 1 && r.err.find("device") != std::string::npos)
     GTEST_SKIP() << "no OpenCL device: " << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
@@ -84,7 +86,7 @@ TEST(RenderCli, WritesEveryFileWithViewAndUnitsInTheHeaders) {
   EXPECT_GT(floorPixels, 64 * 48 / 4);
 
   const auto json = nlohmann::json::parse(readText(out / "render.json"));
-  EXPECT_EQ(json["interval"], 2);
+  EXPECT_EQ(json["interval"], 4);
   EXPECT_EQ(json["views"][0]["name"], "corner");
   EXPECT_EQ(json["views"][0]["width_px"], 64);
   EXPECT_LT(json["views"][0]["exact_share"].get<double>(), 1.0);
