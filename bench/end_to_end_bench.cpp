@@ -10,6 +10,9 @@
 //   leaving   the rest of the process's wall time: the last batch's rows, summary.json, the
 //             staged directory's rename, tear-down and exit, and the process's start (loading
 //             its shared libraries)
+// Direct light only (`--direct-only`): the rate is the kernel's and the outputs', which the
+// interreflection's mesh, transfer and final gather would otherwise swamp (interreflection_bench
+// and hierarchy_bench measure those).
 // Two rates per scene: over the whole wall time, and over what the dense run costs beyond a
 // sparse one (120 × 80 points) of the same scene, which leaves out every fixed cost. Each of R
 // repeats prints its runs; the last line of a scene takes the least wall time of each kind.
@@ -112,8 +115,9 @@ double seconds(const timeval& t) {
 // Runs `penumbra grid scene -o output --quiet` and reads its summary.json.
 Run runBinary(const fs::path& scene, const fs::path& output, const std::string& device) {
   fs::remove_all(output);
-  std::vector<std::string> arguments = {binary,          "grid",    scene.string(), "-o",
-                                        output.string(), "--quiet", "--device",     device};
+  std::vector<std::string> arguments = {binary,          "grid",    scene.string(),  "-o",
+                                        output.string(), "--quiet", "--direct-only", "--device",
+                                        device};
   std::vector<char*> argv;
   for (std::string& a : arguments) argv.push_back(a.data());
   argv.push_back(nullptr);
@@ -151,6 +155,7 @@ double kernelSeconds(const fs::path& scenePath, const std::string& device) {
   const Scene scene = loadScene(scenePath, {});
   EstimatorOptions options;
   options.device = device;
+  options.interreflection = false;  // as `--direct-only`
   Estimator estimator(options, scene);
   double seconds = 0.0;
   for (const CalculationGrid& grid : scene.grids)

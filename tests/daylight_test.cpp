@@ -13,6 +13,7 @@
 #include "engine/daylight_evaluation.hpp"
 #include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
+#include "grid/grid_evaluation.hpp"
 #include "grid/grid_metrics.hpp"
 #include "grid/run_report.hpp"
 #include "illuminance/estimator.hpp"
@@ -461,6 +462,45 @@ TEST(DaylightProvision, TheTablePrintsTargetsSharesAndTheVerdict) {
   EXPECT_NE(summaryTable(run).find("no verdict without the site's median external diffuse "
                                    "illuminance (site: median_diffuse_illuminance_lx, lx)"),
             std::string::npos);
+}
+
+TEST(DaylightProvision, OnlyHorizontalGridsGetAVerdict) {
+  // EN 17037's reference plane is horizontal: the work plane (facing +z) is judged, a vertical
+  // grid facing the window (−y) is not, whatever its daylight factor.
+  const Scene scene = parseScene(
+      roomYaml("site: {latitude_deg: 51.5, longitude_deg: -0.1, median_diffuse_illuminance_lx: "
+               "10000}\nsky: {model: cie-overcast, horizontal_illuminance_lx: 10000}\n",
+               1.0) +
+          "grids:\n"
+          "  - {name: plane, height: 0.85, spacing: 0.5, margin: 0.5}\n"
+          "  - {name: wall, rect: {origin: [1, 2, 0.5], u: [4, 0, 0], v: [0, 0, 1.5]}, "
+          "spacing: 0.5}\n",
+      "daylight.yaml");
+  ASSERT_EQ(scene.grids.size(), 2u);
+  // DF 5 % everywhere: every level's targets are met (DF >= D_T = 7.5 % fails the high level).
+  const IlluminanceEstimator estimate = [](std::span<const SamplePoint> points) {
+    return PointIlluminance(std::vector<double>(points.size(), 500.0));
+  };
+  RunReport run;
+  for (const CalculationGrid& grid : scene.grids)
+    run.grids.push_back(
+        streamedGridReport(grid, streamGrid(scene, grid, estimate, 64, GridBatchSink{})));
+  const GridReport& plane = run.grids[0];
+  const GridReport& wall = run.grids[1];
+  EXPECT_TRUE(facesUp(scene.grids[0]));
+  EXPECT_FALSE(facesUp(scene.grids[1]));
+  ASSERT_TRUE(plane.daylight && wall.daylight);
+  EXPECT_DOUBLE_EQ(plane.daylight->mean, 5.0);
+  EXPECT_DOUBLE_EQ(wall.daylight->mean, 5.0);
+  ASSERT_TRUE(plane.daylight->provision);
+  EXPECT_EQ(plane.daylight->provision->reached(), "medium");
+  EXPECT_FALSE(wall.daylight->provision);
+  const std::string table = summaryTable(run);
+  EXPECT_NE(table.find("plane: EN 17037 daylight provision reached: medium"), std::string::npos)
+      << table;
+  EXPECT_NE(table.find("wall: no EN 17037 verdict: the grid does not face up"), std::string::npos)
+      << table;
+  EXPECT_EQ(table.find("wall: EN 17037 daylight provision reached"), std::string::npos) << table;
 }
 
 TEST(DaylightProvision, TheSiteGivesTheMedianDiffuseIlluminance) {

@@ -315,9 +315,10 @@ HeatMapFigure drawHeatMap(const PlanarField& field, const GridMetrics& metrics, 
   levelStyle.vertical = Align::Centre;
   levelStyle.box = true;
   for (const IsoluxLabel& label : placeIsoluxLabels(figure.isolux, layout, markers)) {
-    renderer->AddActor2D(textAt(style.quantity.levelPrefix + formatTick(label.level, label.level) +
-                                    unitSuffix(style.quantity),
-                                label.pixel, levelStyle));
+    const FieldQuantity& q = style.quantity;
+    const std::string level = q.levelDigits > 0 ? fmt::format("{:.{}g}", label.level, q.levelDigits)
+                                                : formatTick(label.level, label.level);
+    renderer->AddActor2D(textAt(q.levelPrefix + level + unitSuffix(q), label.pixel, levelStyle));
   }
   if (extremes.eMax >= 0) {
     const FieldQuantity& q = style.quantity;

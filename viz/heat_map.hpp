@@ -29,6 +29,7 @@ struct FieldQuantity {
   std::string extremeLabel = "E";       // "Emin ...", "Emax ..."
   std::string unit = "lx";              // after readings and line levels; "" for none
   std::string levelPrefix;              // before a line's level ("UGR_L ")
+  int levelDigits = 0;  // significant digits of a line's level; 0: the digits the level has
   std::string legendTitle = "Illuminance E [lx]";
   std::string metricsLine;  // under the title; empty: the illuminance metrics of the grid
 };

@@ -11,6 +11,7 @@
 #include "grid/scene_grids.hpp"
 #include "output/result_files.hpp"
 #include "viz/colour_scale.hpp"
+#include "viz/daylight_map.hpp"
 #include "viz/grid_dataset.hpp"
 #include "viz/heat_map.hpp"
 #include "viz/isolux_lines.hpp"
@@ -100,6 +101,13 @@ std::vector<PictureFile> plotPictures(const RunReport& run, const Scene& scene,
     for (double value : {m.eAvg, m.eMin, m.eMax, m.u0, m.ud}) h.add(value);
     h.add(static_cast<double>(m.pointsInsideSolids));
     pictures.push_back({gridFileStem(grid.name) + ".png", h.hex()});
+    if (hasDaylightMap(grid)) {
+      const DaylightMetrics& d = *grid.daylight;  // the title's numbers
+      for (double value : {d.outdoorIlluminance, d.mean, d.median, d.min, d.max, d.uniformity})
+        h.add(value);
+      if (d.provision) h.add(d.provision->medianDiffuseIlluminance);
+      pictures.push_back({daylightMapFileName(grid.name), h.hex()});
+    }
   }
   if (!scene.solids.empty()) {
     Fnv1a h = common;
@@ -120,6 +128,14 @@ PicturesWritten drawPlotPictures(const RunReport& run, const Scene& scene,
       if (std::find(names.begin(), names.end(), png) == names.end()) continue;
       if (progress) progress("plotting " + grid.name);
       drawHeatMapOf(grid, scene, options, sceneName, into / png);
+    }
+    for (const GridReport& grid : run.grids) {
+      const std::string png = daylightMapFileName(grid.name);
+      if (std::find(names.begin(), names.end(), png) == names.end()) continue;
+      if (progress) progress("plotting the daylight factor of " + grid.name);
+      const DaylightMapStyle look{options.legend.palette, options.width,
+                                  heatMapSubtitle(grid, planarField(grid), sceneName)};
+      drawDaylightMap(grid, scene, look, into / png);
     }
     if (std::find(names.begin(), names.end(), "surfaces.png") != names.end()) {
       if (progress) progress("drawing the room's surfaces");

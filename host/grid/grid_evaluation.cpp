@@ -168,6 +168,17 @@ GridSamples gridSamples(const Scene& scene, const CalculationGrid& grid) {
   return gridSamples(SolidLocator(scene), grid);
 }
 
+bool facesUp(const CalculationGrid& grid) {
+  // Unit normals within 1e-6 rad of +z: a plane a user means to be horizontal, built from
+  // rounded input.
+  const auto up = [&](std::size_t i) { return grid.normal(i).z() >= 1.0 - 5e-13; };
+  if (grid.size() == 0) return false;
+  if (grid.kind != GridKind::Points) return up(0);
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    if (!up(i)) return false;
+  return true;
+}
+
 GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
                    const IlluminanceEstimator& estimate, std::size_t batchSize,
                    const GridBatchSink& sink, const ProgressCallback& progress) {
@@ -209,8 +220,9 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   std::vector<SamplePoint> outside;
   std::vector<std::size_t> outsideAt;  // offsets in the chunk
   std::vector<int> inside, onSolid;
-  std::vector<double> e, direct;
+  std::vector<double> e, direct, sun;
   GridMetricsSum directSums;
+  SunMetricsSum sunSums;
   std::vector<double> daylightTotal, daylightDirect;  // lx, points not inside solids (a sky)
   // Whether the estimator gives the direct part too, known from its first answer; the points
   // before it are inside solids (E = 0, direct part 0).
@@ -239,10 +251,12 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     }
     e.assign(inside.size(), 0.0);
     direct.assign(split ? inside.size() : 0, 0.0);
+    sun.assign(scene.sun ? inside.size() : 0, 0.0);
     if (!outside.empty()) {
       const PointIlluminance values = estimate(outside);
       if (values.total.size() != outside.size() ||
           (!values.direct.empty() && values.direct.size() != outside.size()) ||
+          (!values.sun.empty() && values.sun.size() != outside.size()) ||
           (answered && split == values.direct.empty())) {
         throw std::logic_error("estimator returned the wrong number of values");
       }
@@ -254,25 +268,33 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
       for (std::size_t k = 0; k < values.total.size(); ++k) e[outsideAt[k]] = values.total[k];
       for (std::size_t k = 0; k < values.direct.size(); ++k)
         direct[outsideAt[k]] = values.direct[k];
+      if (!sun.empty())
+        for (std::size_t k = 0; k < values.sun.size(); ++k) sun[outsideAt[k]] = values.sun[k];
     }
     for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
+    // The daylight factor leaves the sun out.
     if (scene.sky)
       for (std::size_t k = 0; k < e.size(); ++k) {
         if (inside[k] >= 0) continue;
-        daylightTotal.push_back(e[k]);
-        daylightDirect.push_back(k < direct.size() ? direct[k] : e[k]);
+        const double sunPart = k < sun.size() ? sun[k] : 0.0;
+        daylightTotal.push_back(e[k] - sunPart);
+        daylightDirect.push_back((k < direct.size() ? direct[k] : e[k]) - sunPart);
       }
+    for (std::size_t k = 0; k < sun.size(); ++k) sunSums.add(sun[k], inside[k] >= 0);
     for (std::size_t k = 0; k < e.size(); ++k)
       directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
-    if (sink) sink(GridBatch{first, e, direct, inside, onSolid});
+    if (sink) sink(GridBatch{first, e, direct, sun, inside, onSolid});
     if (progress) progress(next, n);
   }
   run.metrics = sums.metrics(grid.spacing);
   if (split) run.directMetrics = directSums.metrics(grid.spacing);
   if (scene.sky)
-    run.daylight = daylightMetrics(
-        std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance,
-        scene.site ? scene.site->medianDiffuseIlluminance : std::optional<double>());
+    run.daylight =
+        daylightMetrics(std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance,
+                        scene.site && facesUp(grid) ? scene.site->medianDiffuseIlluminance
+                                                    : std::optional<double>());
+  if (run.daylight) run.daylight->horizontal = facesUp(grid);
+  if (scene.sun) run.sun = sunSums.metrics();
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
 }
@@ -293,11 +315,14 @@ GridEvaluation evaluateGrid(const Scene& scene, const CalculationGrid& grid,
       evaluation.illuminance.push_back(batch.illuminance[k]);
       // A batch before the estimator's first answer holds inside points only: direct = total = 0.
       evaluation.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
+      if (!batch.sun.empty()) evaluation.sun.push_back(batch.sun[k]);
     }
   };
   const GridRun run = streamGrid(scene, grid, estimate, batchSize, keep, progress);
   evaluation.name = run.name;
   evaluation.metrics = run.metrics;
+  evaluation.daylight = run.daylight;
+  evaluation.sunMetrics = run.sun;
   if (!run.directMetrics) evaluation.direct.clear();
   evaluation.seconds = run.seconds;
   return evaluation;

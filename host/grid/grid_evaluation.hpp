@@ -73,6 +73,7 @@ struct GridBatch {
   std::size_t first = 0;
   std::span<const double> illuminance;  // lx, total; 0 for points inside solids
   std::span<const double> direct;       // lx, its direct part; empty for a direct-only run
+  std::span<const double> sun;          // lx, the direct sunlight in E; empty without a sun
   std::span<const int> inside;          // index into Scene::solids, -1 for none
   std::span<const int> onSolid;         // the solid each point lies on, -1 for none
 };
@@ -84,9 +85,16 @@ struct GridRun {
   std::string name;
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
-  std::optional<DaylightMetrics> daylight;   // when the scene has a sky
-  double seconds = 0.0;                      // wall time: classifying points and the estimator
+  // When the scene has a sky: the daylight factor of E less the sun's part (DF is defined under
+  // the overcast sky); the EN 17037 verdict only for a grid facing up (a horizontal reference
+  // plane).
+  std::optional<DaylightMetrics> daylight;
+  std::optional<SunMetrics> sun;  // when the scene has a sun
+  double seconds = 0.0;           // wall time: classifying points and the estimator
 };
+
+// Whether every point of `grid` faces straight up (+z): a horizontal reference plane.
+bool facesUp(const CalculationGrid& grid);
 
 // Evaluates the points that are not inside solids, `batchSize` at a time (the estimator sees the
 // same batches whatever the sink does), gives E = 0 to the others, and hands every point to
@@ -102,7 +110,10 @@ struct GridEvaluation {
   GridSamples samples;
   std::vector<double> illuminance;  // lx, per point, total; 0 for points inside solids
   std::vector<double> direct;       // lx, its direct part; empty for a direct-only run
+  std::vector<double> sun;          // lx, the direct sunlight in E; empty without a sun
   GridMetrics metrics;
+  std::optional<DaylightMetrics> daylight;  // when the scene has a sky
+  std::optional<SunMetrics> sunMetrics;     // when the scene has a sun
   double seconds = 0.0;
 };
 

@@ -47,6 +47,27 @@ GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int
   return sums.metrics(spacing);
 }
 
+void SunMetricsSum::add(double sun, bool insideSolid) {
+  if (insideSolid) return;
+  ++counted_;
+  sum_ += sun;
+  max_ = std::max(max_, sun);
+  if (sun > 0.0) ++sunlit_;
+}
+
+SunMetrics SunMetricsSum::metrics() const {
+  SunMetrics m;
+  if (counted_ == 0) {
+    m.eAvg = m.eMax = m.sunlitShare = std::numeric_limits<double>::quiet_NaN();
+    return m;
+  }
+  const auto n = static_cast<double>(counted_);
+  m.eAvg = sum_ / n;
+  m.eMax = max_;
+  m.sunlitShare = static_cast<double>(sunlit_) / n;
+  return m;
+}
+
 namespace {
 
 // The share of `sorted` (E in lx, ascending) with DF = 100 · E / E_h >= `df` (%), in [0, 1].
@@ -115,6 +136,15 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
     m.shareAtLeast.push_back(shareAtLeast(illuminance, target, outdoorIlluminance));
   if (medianDiffuseIlluminance)
     m.provision = daylightProvision(illuminance, outdoorIlluminance, *medianDiffuseIlluminance);
+  return m;
+}
+
+DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<const double> direct,
+                                      double outdoorIlluminance,
+                                      std::optional<double> medianDiffuseIlluminance) {
+  // DF is E in units of E_h / 100: the metrics of E over an outdoor illuminance of 100.
+  DaylightMetrics m = daylightMetrics(std::move(factors), direct, 100.0, medianDiffuseIlluminance);
+  m.outdoorIlluminance = outdoorIlluminance;
   return m;
 }
 

@@ -80,6 +80,25 @@ struct DaylightMetrics {
                               // openings); the mean itself for a direct-only run
   double internalMean = 0.0;  // %: mean − directMean, the internally reflected component
   std::optional<DaylightProvision> provision;  // when the site gives E_v,d,med
+  // Whether the grid faces up, a horizontal reference plane: EN 17037 judges no other.
+  bool horizontal = true;
+};
+
+// The direct sunlight on a grid's points not inside solids (illuminance/sunlight.hpp).
+struct SunMetrics {
+  double eAvg = 0.0, eMax = 0.0;  // lx; NaN when no point counts
+  double sunlitShare = 0.0;       // of the points with E_sun > 0, in [0, 1]; NaN when none counts
+};
+
+// The metrics of E_sun added point by point.
+class SunMetricsSum {
+ public:
+  void add(double sun, bool insideSolid);
+  SunMetrics metrics() const;
+
+ private:
+  std::size_t counted_ = 0, sunlit_ = 0;
+  double sum_ = 0.0, max_ = 0.0;
 };
 
 // From E (lx) of the points not inside solids, and of its direct part (empty: direct only);
@@ -87,6 +106,12 @@ struct DaylightMetrics {
 DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const double> direct,
                                 double outdoorIlluminance,
                                 std::optional<double> medianDiffuseIlluminance = std::nullopt);
+
+// The same from DF (%) of the points not inside solids and of its direct part (empty: direct
+// only), as a grid's CSV holds them; E_h (lx) is kept in the result for the record.
+DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<const double> direct,
+                                      double outdoorIlluminance,
+                                      std::optional<double> medianDiffuseIlluminance);
 
 // `inside[i]` is the index of the solid that strictly contains point i, -1 for none.
 GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int> inside,

@@ -15,6 +15,7 @@ GridReport streamedGridReport(const CalculationGrid& grid, const GridRun& run) {
   report.metrics = run.metrics;
   report.directMetrics = run.directMetrics;
   report.daylight = run.daylight;
+  report.sunMetrics = run.sun;
   report.seconds = run.seconds;
   return report;
 }

@@ -30,10 +30,23 @@ struct GridReport {
   std::vector<std::string> insideSolids;     // the containing solid's name, "" for none
   std::vector<double> illuminance;           // lx, total; 0 inside solids
   std::vector<double> direct;                // lx, its direct part; empty for a direct-only run
+  std::vector<double> sun;                   // lx, the direct sunlight in E; empty without a sun
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
-  std::optional<DaylightMetrics> daylight;   // when the scene has a sky
-  double seconds = 0.0;                      // time spent computing E for this grid
+  std::optional<DaylightMetrics> daylight;   // when the scene has a sky; excludes the sun
+  std::optional<SunMetrics> sunMetrics;      // when the scene has a sun
+  // Read back from a CSV with a sky (readResults): DF_pct per point, %, and DF_direct_pct with
+  // interreflection; empty otherwise. The run itself writes them from E.
+  std::vector<double> daylightFactor, daylightFactorDirect;
+  double seconds = 0.0;  // time spent computing E for this grid
+};
+
+// The scene's sun as the run places it (scene.hpp, Sun).
+struct SunReport {
+  double azimuthDegrees = 0.0;           // ° from north towards east
+  double elevationDegrees = 0.0;         // °, apparent
+  double directNormalIlluminance = 0.0;  // lx: E_dn
+  bool aboveHorizon = true;              // below it the sun gives no light
 };
 
 // A photometric luminaire of the scene as summary.json lists it.
@@ -70,6 +83,7 @@ struct RunReport {
   // The scene's warnings, each as printed ("office.yaml:31: warning: sources[1]: ...").
   std::vector<std::string> warnings;
   std::vector<LuminaireReport> luminaires;
+  std::optional<SunReport> sun;  // when the scene has a sun
   std::vector<GridReport> grids;
 };
 

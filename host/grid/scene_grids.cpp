@@ -24,6 +24,10 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
     report.warnings.push_back(warningText(scene.file, warning));
   }
   report.luminaires = luminaireReports(scene);
+  if (scene.sun)
+    report.sun =
+        SunReport{scene.sun->position.azimuthDegrees, scene.sun->position.apparentElevationDegrees,
+                  scene.sun->directNormalIlluminance, scene.sun->aboveHorizon()};
   return report;
 }
 

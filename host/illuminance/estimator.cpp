@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "engine/daylight_evaluation.hpp"
+#include "illuminance/sunlight.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "scene/daylight.hpp"
 
@@ -56,12 +57,21 @@ void Estimator::setScene(const Scene& scene) {
 }
 
 PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
-  if (!engine_) return daylightReference(*scene_, points);
-  PointIlluminance e(evaluateDaylight(*engine_, *scene_, points).illuminance);
-  if (interreflection_) {
-    e.direct = e.total;
-    const std::vector<double> indirect = interreflection_->indirect(points);
-    for (std::size_t i = 0; i < indirect.size(); ++i) e.total[i] += indirect[i];
+  PointIlluminance e;
+  if (!engine_) {
+    e.total = daylightReference(*scene_, points);
+  } else {
+    e.total = evaluateDaylight(*engine_, *scene_, points).illuminance;
+    if (interreflection_) {
+      e.direct = e.total;
+      const std::vector<double> indirect = interreflection_->indirect(points);
+      for (std::size_t i = 0; i < indirect.size(); ++i) e.total[i] += indirect[i];
+    }
+  }
+  if (scene_->sun) {
+    e.sun = sunlight(*scene_, points);
+    for (std::size_t i = 0; i < e.sun.size(); ++i) e.total[i] += e.sun[i];
+    for (std::size_t i = 0; i < e.direct.size(); ++i) e.direct[i] += e.sun[i];
   }
   return e;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // The illuminance of a run: the direct part from the exact OpenCL kernel on a device
 // (engine/IlluminanceEngine) or from the host reference, plus the interreflected part
-// (radiosity/Interreflection) unless the run asks for direct light only. `penumbra grid` makes
+// (radiosity/Interreflection) unless the run asks for direct light only, plus the direct
+// sunlight of a scene with a sun (sunlight.hpp, on the host in double for either estimator; the
+// sun is not interreflected). `penumbra grid` makes
 // one per run; `penumbra sweep` keeps one for all its cases (the device and the compiled
 // program stay, only the scene is replaced), so both compute through this class.
 #include <cstddef>
@@ -20,10 +22,12 @@
 
 namespace penumbra {
 
-// E in lx at each point: the total, and its direct part where interreflection is computed.
+// E in lx at each point: the total, its direct part where interreflection is computed, and the
+// direct sunlight it holds where the scene has a sun.
 struct PointIlluminance {
   std::vector<double> total;   // lx
   std::vector<double> direct;  // lx; empty when the total is direct light only
+  std::vector<double> sun;     // lx, part of total and of direct; empty without a sun
   PointIlluminance() = default;
   PointIlluminance(std::vector<double> directOnly) : total(std::move(directOnly)) {}  // NOLINT
 };
@@ -56,7 +60,8 @@ class Estimator {
   // interreflection is solved again.
   void setScene(const Scene& scene);
 
-  // E at every point: the total, with its direct part when interreflection is on.
+  // E at every point: the total, with its direct part when interreflection is on and the sun's
+  // part when the scene has a sun.
   PointIlluminance illuminance(std::span<const SamplePoint> points);
   // The interreflected part of E alone (lx); zeros when the run is direct light only.
   std::vector<double> interreflected(std::span<const SamplePoint> points);

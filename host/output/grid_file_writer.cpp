@@ -22,7 +22,8 @@ GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Sce
   pts_.open(ptsPath_, std::ios::binary);
   if (!pts_) throw std::runtime_error("cannot create " + ptsPath_.string());
   if (scene.sky) rows_.setOutdoorIlluminance(scene.sky->horizontalIlluminance);
-  const std::string_view header = gridCsvHeader(withParts, scene.sky.has_value());
+  rows_.setSunColumn(scene.sun.has_value());
+  const std::string header = gridCsvHeader(withParts, scene.sky.has_value(), scene.sun.has_value());
   csv_.write(header.data(), static_cast<std::streamsize>(header.size()));
   thread_ = std::thread([this] { writeBatches(); });
 }
@@ -45,6 +46,7 @@ void GridFileWriter::write(const GridBatch& batch) {
   next.first = batch.first;
   next.illuminance.assign(batch.illuminance.begin(), batch.illuminance.end());
   next.direct.assign(batch.direct.begin(), batch.direct.end());
+  next.sun.assign(batch.sun.begin(), batch.sun.end());
   next.inside.assign(batch.inside.begin(), batch.inside.end());
   lock.unlock();
   changed_.notify_all();
@@ -98,12 +100,10 @@ void GridFileWriter::writeBatch(const Batch& batch) {
     const int inside = batch.inside[k];
     const std::string_view insideField =
         inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view();
-    if (withParts_) {
-      const double direct = batch.direct.empty() ? batch.illuminance[k] : batch.direct[k];
-      rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k], direct, insideField);
-    } else {
-      rows_.add(grid_->position(i), grid_->normal(i), batch.illuminance[k], insideField);
-    }
+    const double direct = batch.direct.empty() ? batch.illuminance[k] : batch.direct[k];
+    const GridRowValues values{batch.illuminance[k], withParts_ ? &direct : nullptr,
+                               batch.sun.empty() ? 0.0 : batch.sun[k]};
+    rows_.add(grid_->position(i), grid_->normal(i), values, insideField);
   }
   csv_.write(rows_.csv().data(), static_cast<std::streamsize>(rows_.csv().size()));
   res_.write(rows_.res().data(), static_cast<std::streamsize>(rows_.res().size()));

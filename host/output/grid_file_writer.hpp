@@ -48,7 +48,8 @@ class GridFileWriter {
     std::size_t first = 0;
     std::vector<double> illuminance;
     std::vector<double>
-        direct;  // empty: direct = illuminance (a direct-only run, or inside points)
+        direct;               // empty: direct = illuminance (a direct-only run, or inside points)
+    std::vector<double> sun;  // empty: no sun
     std::vector<int> inside;
   };
   void writeBatches();              // the thread

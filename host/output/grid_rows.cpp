@@ -7,20 +7,27 @@ namespace penumbra {
 
 void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance,
                    std::string_view insideField) {
-  addRow(position, normal, illuminance, nullptr, insideField);
+  addRow(position, normal, GridRowValues{illuminance, nullptr, 0.0}, insideField);
 }
 
 void GridRows::add(const Vec3& position, const Vec3& normal, double illuminance, double direct,
                    std::string_view insideField) {
-  addRow(position, normal, illuminance, &direct, insideField);
+  addRow(position, normal, GridRowValues{illuminance, &direct, 0.0}, insideField);
 }
 
-void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminance,
-                      const double* direct, std::string_view insideField) {
-  // Room for twelve numbers and their separators, the field and the line break; the buffer is
+void GridRows::add(const Vec3& position, const Vec3& normal, const GridRowValues& values,
+                   std::string_view insideField) {
+  addRow(position, normal, values, insideField);
+}
+
+void GridRows::addRow(const Vec3& position, const Vec3& normal, const GridRowValues& values,
+                      std::string_view insideField) {
+  const double illuminance = values.illuminance;
+  const double* direct = values.direct;
+  // Room for thirteen numbers and their separators, the field and the line break; the buffer is
   // then cut to what was written (fmt's resize leaves new bytes unset).
   const std::size_t start = csv_.size();
-  csv_.resize(start + 12 * (kMaxNumberText + 1) + insideField.size() + 1);
+  csv_.resize(start + 13 * (kMaxNumberText + 1) + insideField.size() + 1);
   char* out = writePoint(csv_.data() + start, position, normal, ',');
   const char* e = out;
   // The .pts line: the same six numbers, blank-separated.
@@ -41,14 +48,19 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, double illuminan
     out = writeNumber(out, illuminance - *direct, illuminanceDigits_);
     *out++ = ',';
   }
+  const double sun = sunColumn_ ? values.sun : 0.0;
+  if (sunColumn_) {
+    out = writeNumber(out, sun, illuminanceDigits_);
+    *out++ = ',';
+  }
   if (outdoor_ > 0.0) {
     const double toPercent = 100.0 / outdoor_;
-    out = writeNumber(out, toPercent * illuminance);
+    out = writeNumber(out, toPercent * (illuminance - sun));
     *out++ = ',';
     if (direct != nullptr) {
-      out = writeNumber(out, toPercent * *direct);
+      out = writeNumber(out, toPercent * (*direct - sun));
       *out++ = ',';
-      out = writeNumber(out, toPercent * illuminance - toPercent * *direct);
+      out = writeNumber(out, toPercent * (illuminance - sun) - toPercent * (*direct - sun));
       *out++ = ',';
     }
   }

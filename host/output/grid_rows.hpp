@@ -5,10 +5,13 @@
 //                x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside: E_lx the total,
 //                E_indirect_lx = E_lx - E_direct_lx (each rounded to the digits E holds, so the
 //                identity holds to half an ulp of each)
+//                With a sun (illuminance/sunlight.hpp), E_sun_lx follows them: the direct
+//                sunlight, part of E_lx (and of E_direct_lx).
 //                With a sky (scene/daylight.hpp), the daylight factor in % follows the E columns:
-//                DF_pct = 100·E_lx/E_h, and with interreflection DF_direct_pct (the sky and ground
-//                seen through the openings) and DF_internal_pct (interreflected), which add up
-//                to DF_pct; E_h the sky's unobstructed horizontal illuminance
+//                DF_pct = 100·(E_lx − E_sun_lx)/E_h, and with interreflection DF_direct_pct (the
+//                sky and ground seen through the openings) and DF_internal_pct (interreflected),
+//                which add up to DF_pct; E_h the sky's unobstructed horizontal illuminance. The
+//                daylight factor leaves the sun out: it is defined under the overcast sky
 //   <grid>.res   E_lx (the total), one value a line
 //   <grid>.pts   x y z nx ny nz (m; unit normal), one point a line in the order of .res: the
 //                points as Radiance's rtrace reads them, so that .res and .pts go together
@@ -18,6 +21,7 @@
 // reference; coordinates and normals are host doubles.
 #include <fmt/format.h>
 
+#include <string>
 #include <string_view>
 
 #include "geometry/vec.hpp"
@@ -25,18 +29,21 @@
 
 namespace penumbra {
 
-inline constexpr std::string_view kGridCsvHeader = "x_m,y_m,z_m,nx,ny,nz,E_lx,inside\n";
-inline constexpr std::string_view kGridCsvHeaderWithParts =
-    "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,inside\n";
-inline constexpr std::string_view kGridCsvHeaderDaylight =
-    "x_m,y_m,z_m,nx,ny,nz,E_lx,DF_pct,inside\n";
-inline constexpr std::string_view kGridCsvHeaderDaylightWithParts =
-    "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,DF_pct,DF_direct_pct,DF_internal_pct,"
-    "inside\n";
-inline std::string_view gridCsvHeader(bool withParts, bool daylight = false) {
-  if (daylight) return withParts ? kGridCsvHeaderDaylightWithParts : kGridCsvHeaderDaylight;
-  return withParts ? kGridCsvHeaderWithParts : kGridCsvHeader;
+// The CSV's header line, with its line break.
+inline std::string gridCsvHeader(bool withParts, bool daylight = false, bool sun = false) {
+  std::string header = "x_m,y_m,z_m,nx,ny,nz,E_lx";
+  if (withParts) header += ",E_direct_lx,E_indirect_lx";
+  if (sun) header += ",E_sun_lx";
+  if (daylight) header += withParts ? ",DF_pct,DF_direct_pct,DF_internal_pct" : ",DF_pct";
+  return header + ",inside\n";
 }
+
+// One point's values as a row holds them.
+struct GridRowValues {
+  double illuminance = 0.0;        // lx, total
+  const double* direct = nullptr;  // lx, its direct part; null: no E_direct/E_indirect columns
+  double sun = 0.0;                // lx, the sunlight in E; written with setSunColumn(true)
+};
 
 // Rows of both files, appended point by point into two buffers that keep their memory when
 // cleared, so that writing a batch allocates nothing once the buffers have grown to a batch.
@@ -46,11 +53,16 @@ class GridRows {
   explicit GridRows(NumberDigits illuminance) : illuminanceDigits_(illuminance) {}
   // With E_h > 0 (lx), rows carry the daylight factor columns; 0: none.
   void setOutdoorIlluminance(double outdoor) { outdoor_ = outdoor; }
+  // With a sun, rows carry E_sun_lx and the daylight factor leaves it out.
+  void setSunColumn(bool sun) { sunColumn_ = sun; }
   // Appends the point's CSV row and its .res line; `insideField` is already a CSV field.
   void add(const Vec3& position, const Vec3& normal, double illuminance,
            std::string_view insideField);
   // The same with the direct part (and the indirect one, the difference) after E.
   void add(const Vec3& position, const Vec3& normal, double illuminance, double direct,
+           std::string_view insideField);
+  // The same with any columns (GridRowValues).
+  void add(const Vec3& position, const Vec3& normal, const GridRowValues& values,
            std::string_view insideField);
   // Appends the .res line alone.
   void addIlluminance(double illuminance);
@@ -70,12 +82,13 @@ class GridRows {
   // Writes the six numbers of a point, each followed by `separator`, at `out` (room for six
   // numbers and separators); returns the end.
   char* writePoint(char* out, const Vec3& position, const Vec3& normal, char separator);
-  void addRow(const Vec3& position, const Vec3& normal, double illuminance, const double* direct,
+  void addRow(const Vec3& position, const Vec3& normal, const GridRowValues& values,
               std::string_view insideField);
 
   NumberDigits illuminanceDigits_;
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
   double outdoor_ = 0.0;     // lx: E_h for the daylight factor columns; 0: none
+  bool sunColumn_ = false;
   fmt::memory_buffer csv_, res_, pts_;
 };
 

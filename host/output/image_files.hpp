@@ -1,7 +1,8 @@
 #pragma once
-// Image files through OpenImageIO. Every writer goes through a temporary name in the same folder
-// and renames it when complete, so that a failed or killed run never leaves a partial image under
-// the final name. Errors throw std::runtime_error naming the file.
+// Image files through OpenImageIO, which is loaded the first time one is read or written (the
+// module penumbra_image_io, image_codec.hpp says why). Every writer goes through a temporary name
+// in the same folder and renames it when complete, so that a failed or killed run never leaves a
+// partial image under the final name. Errors throw std::runtime_error naming the file.
 //
 //   <view>.exr            linear RGB, 32-bit float, channels R G B (cd/m² for renders)
 //   <view>.<aov>.exr      one 32-bit float channel named after the AOV (e.g. "E" in lx)

@@ -106,18 +106,17 @@ NumberDigits illuminanceDigits(const RunReport& report) {
 
 void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits) {
   const bool withParts = !grid.direct.empty();
-  const std::string_view header = gridCsvHeader(withParts, grid.daylight.has_value());
+  const bool withSun = grid.sunMetrics.has_value();
+  const std::string header = gridCsvHeader(withParts, grid.daylight.has_value(), withSun);
   out.write(header.data(), static_cast<std::streamsize>(header.size()));
   GridRows rows(digits);
   if (grid.daylight) rows.setOutdoorIlluminance(grid.daylight->outdoorIlluminance);
+  rows.setSunColumn(withSun);
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
-    if (withParts) {
-      rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i], grid.direct[i],
-               csvField(grid.insideSolids[i]));
-    } else {
-      rows.add(grid.points[i].position, grid.points[i].normal, grid.illuminance[i],
-               csvField(grid.insideSolids[i]));
-    }
+    const GridRowValues values{grid.illuminance[i], withParts ? &grid.direct[i] : nullptr,
+                               i < grid.sun.size() ? grid.sun[i] : 0.0};
+    rows.add(grid.points[i].position, grid.points[i].normal, values,
+             csvField(grid.insideSolids[i]));
     if (rows.csv().size() > (1u << 20)) {
       out.write(rows.csv().data(), static_cast<std::streamsize>(rows.csv().size()));
       rows.clear();
@@ -277,6 +276,8 @@ nlohmann::json daylightJson(const DaylightMetrics& m) {
                            {"DFavg_internal_pct", jsonNumber(m.internalMean)},
                            {"shares", shares}};
   if (m.provision) result["en17037"] = provisionJson(*m.provision);
+  // EN 17037's reference plane is horizontal: a grid that does not face up gets no verdict.
+  result["faces_up"] = m.horizontal;
   return result;
 }
 
@@ -304,6 +305,10 @@ nlohmann::json summaryJson(const RunReport& report) {
     entry.update(metricsJson(m, grid.kind, digits));
     if (grid.directMetrics) entry["direct"] = metricsJson(*grid.directMetrics, grid.kind, digits);
     if (grid.daylight) entry["daylight_factor"] = daylightJson(*grid.daylight);
+    if (grid.sunMetrics)
+      entry["sun"] = {{"Esun_avg_lx", jsonNumber(withDigits(grid.sunMetrics->eAvg, digits))},
+                      {"Esun_max_lx", jsonNumber(withDigits(grid.sunMetrics->eMax, digits))},
+                      {"sunlit_share_pct", jsonNumber(100.0 * grid.sunMetrics->sunlitShare)}};
     grids.push_back(std::move(entry));
   }
   nlohmann::json summary = {
@@ -330,6 +335,11 @@ nlohmann::json summaryJson(const RunReport& report) {
   if (report.interreflection)
     summary["interreflection"] = interreflectionJson(*report.interreflection);
   if (!report.luminaires.empty()) summary["luminaires"] = luminairesJson(report.luminaires);
+  if (report.sun)
+    summary["sun"] = {{"azimuth_deg", report.sun->azimuthDegrees},
+                      {"elevation_deg", report.sun->elevationDegrees},
+                      {"direct_normal_illuminance_lx", report.sun->directNormalIlluminance},
+                      {"above_horizon", report.sun->aboveHorizon}};
   return summary;
 }
 

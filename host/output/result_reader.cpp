@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -77,6 +79,31 @@ ParameterValues readParameters(const nlohmann::json& summary, const fs::path& fi
   return values;
 }
 
+// The daylight factor figures of a grid whose CSV has DF columns: recomputed from them (points
+// inside solids left out, as the run did), with E_h and E_v,d,med from summary.json.
+DaylightMetrics readDaylight(const nlohmann::json& entry, const GridReport& grid,
+                             const fs::path& csv) {
+  if (!entry.contains("daylight_factor")) {
+    throw std::runtime_error(fmt::format(
+        "{} has daylight factor columns, but summary.json gives its grid no daylight_factor",
+        csv.string()));
+  }
+  const nlohmann::json& j = entry.at("daylight_factor");
+  std::optional<double> median;
+  if (j.contains("en17037")) median = j.at("en17037").at("median_diffuse_illuminance_lx");
+  std::vector<double> factors, direct;
+  for (std::size_t i = 0; i < grid.daylightFactor.size(); ++i) {
+    if (!grid.insideSolids[i].empty()) continue;
+    factors.push_back(grid.daylightFactor[i]);
+    if (!grid.daylightFactorDirect.empty()) direct.push_back(grid.daylightFactorDirect[i]);
+  }
+  DaylightMetrics metrics = daylightFactorMetrics(
+      std::move(factors), direct, j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  // Without faces_up the grid counts as facing up: its verdict rests on the en17037 key alone.
+  metrics.horizontal = j.value("faces_up", true);
+  return metrics;
+}
+
 GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   GridReport grid;
   grid.name = entry.at("name").get<std::string>();
@@ -109,6 +136,7 @@ GridReport readGrid(const nlohmann::json& entry, const fs::path& directory) {
   if (!grid.direct.empty()) {
     grid.directMetrics = gridMetrics(grid.direct, inside, std::isnan(spacing) ? 0.0 : spacing);
   }
+  if (!grid.daylightFactor.empty()) grid.daylight = readDaylight(entry, grid, csv);
   return grid;
 }
 
@@ -129,16 +157,32 @@ nlohmann::json readSummary(const fs::path& file) {
 
 void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid) {
   std::string line;
-  const auto header = [](bool withParts) {
-    const std::string_view text = gridCsvHeader(withParts);
-    return std::string(text.substr(0, text.size() - 1));  // without the line break
+  // The header names the columns: E's parts, the sun and the daylight factor are each optional.
+  struct Layout {
+    bool withParts, daylight, sun;
+    std::string header;  // without the line break
   };
-  if (!std::getline(in, line) || (line != header(false) && line != header(true))) {
+  std::vector<Layout> layouts;
+  for (const bool withParts : {false, true})
+    for (const bool daylight : {false, true})
+      for (const bool sun : {false, true}) {
+        const std::string text = gridCsvHeader(withParts, daylight, sun);
+        layouts.push_back({withParts, daylight, sun, text.substr(0, text.size() - 1)});
+      }
+  const bool read = static_cast<bool>(std::getline(in, line));
+  const auto layout = std::find_if(layouts.begin(), layouts.end(),
+                                   [&](const Layout& l) { return read && line == l.header; });
+  if (layout == layouts.end()) {
+    std::string headers;
+    for (const Layout& l : layouts) headers += (headers.empty() ? "" : ", ") + l.header;
     throw std::runtime_error(
-        fmt::format("{}:1: expected the header {} or {}", fileName, header(false), header(true)));
+        fmt::format("{}:1: expected one of the headers {}", fileName, headers));
   }
-  const bool withParts = line == header(true);
-  const std::size_t fields = withParts ? 10 : 8;
+  // x..nz, E (and its two parts), E_sun, DF (and its two parts), inside.
+  const std::size_t eFields = layout->withParts ? 3 : 1;
+  const std::size_t sunColumn = 6 + eFields;
+  const std::size_t dfColumn = sunColumn + (layout->sun ? 1 : 0);
+  const std::size_t fields = csvFields(layout->header).size();
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty()) continue;
     const std::string where = fmt::format("{}:{}", fileName, lineNumber);
@@ -153,7 +197,13 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
         Vec3(parseNumber(f[3], where), parseNumber(f[4], where), parseNumber(f[5], where));
     grid.points.push_back(point);
     grid.illuminance.push_back(parseNumber(f[6], where));
-    if (withParts) grid.direct.push_back(parseNumber(f[7], where));
+    if (layout->withParts) grid.direct.push_back(parseNumber(f[7], where));
+    if (layout->sun) grid.sun.push_back(parseNumber(f[sunColumn], where));
+    if (layout->daylight) {
+      grid.daylightFactor.push_back(parseNumber(f[dfColumn], where));
+      if (layout->withParts)
+        grid.daylightFactorDirect.push_back(parseNumber(f[dfColumn + 1], where));
+    }
     grid.insideSolids.push_back(f[fields - 1]);
   }
 }

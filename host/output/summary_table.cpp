@@ -76,8 +76,16 @@ std::string provisionTable(const RunReport& report) {
   std::vector<Row> rows;
   double median = 0.0;
   bool withoutSite = false;
+  std::string notHorizontal;
   for (const GridReport& grid : report.grids) {
     if (!grid.daylight) continue;
+    if (!grid.daylight->horizontal) {
+      notHorizontal += fmt::format(
+          "{}: no EN 17037 verdict: the grid does not face up (the standard's reference plane is "
+          "horizontal)\n",
+          grid.name);
+      continue;
+    }
     if (!grid.daylight->provision) {
       withoutSite = true;
       continue;
@@ -114,7 +122,28 @@ std::string provisionTable(const RunReport& report) {
     table +=
         "EN 17037: no verdict without the site's median external diffuse illuminance "
         "(site: median_diffuse_illuminance_lx, lx)\n";
-  return table;
+  return table + notHorizontal;
+}
+
+// The scene's sun and, per grid, the direct sunlight on it; empty without a sun.
+std::string sunTable(const RunReport& report) {
+  if (!report.sun) return {};
+  const SunReport& sun = *report.sun;
+  std::string table = fmt::format(
+      "Sun: azimuth {:.2f}° (from north towards east), elevation {:.2f}°, E_dn {:g} lx\n",
+      sun.azimuthDegrees, sun.elevationDegrees, sun.directNormalIlluminance);
+  if (!sun.aboveHorizon) {
+    table += "Sun: below the horizon: no direct sunlight (E_sun = 0)\n";
+    return table;
+  }
+  std::vector<Row> rows;
+  rows.push_back({"Grid", "Esun avg [lx]", "Esun max [lx]", "sunlit [% of points]"});
+  for (const GridReport& grid : report.grids) {
+    if (!grid.sunMetrics) continue;
+    const SunMetrics& m = *grid.sunMetrics;
+    rows.push_back({grid.name, lux(m.eAvg), lux(m.eMax), percent(100.0 * m.sunlitShare)});
+  }
+  return table + formatRows(rows);
 }
 
 // The daylight factor of each grid with a sky (grid_metrics.hpp); empty when none has one.
@@ -139,7 +168,7 @@ std::string daylightTable(const RunReport& report) {
   if (rows.empty()) return {};
   return fmt::format(
              "DF: daylight factor, 100 · E / {:g} lx (the sky's unobstructed horizontal "
-             "illuminance)\n",
+             "illuminance; E without the sun)\n",
              outdoor) +
          formatRows(rows) + provisionTable(report);
 }
@@ -171,12 +200,14 @@ std::string summaryTable(const RunReport& report) {
   }
   const std::string maintenance = maintenanceMeaning(report.luminaires);
   std::string table =
-      fmt::format("E: {}{}\n",
+      fmt::format("E: {}{}{}\n",
                   report.interreflection ? "total illuminance (direct + interreflected)"
                                          : "direct illuminance only",
+                  report.sun ? ", with the sun's direct light (the sun is not interreflected)" : "",
                   maintenance.empty() ? "" : ", " + maintenance);
   if (!luminaires.empty()) table += "Luminaires: " + luminaires + "\n";
   table += formatRows(rows);
+  table += sunTable(report);
   table += daylightTable(report);
   for (const GridReport& grid : report.grids) {
     if (grid.metrics.pointsInsideSolids > 0) {

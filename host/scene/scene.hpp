@@ -11,6 +11,7 @@
 #include "scene/luminaire.hpp"
 #include "scene/parameters.hpp"
 #include "scene/scene_warning.hpp"
+#include "scene/solar_position.hpp"
 
 namespace penumbra {
 
@@ -123,16 +124,33 @@ struct Sky {
   double groundLuminance() const;  // cd/m²: ρ_g·E_h/π
 };
 
-// Where a daylight scene is (`site:`): its position is read and kept for the sun's position; its
+// Where a daylight scene is (`site:`): its position places the sun (solar_position.hpp); its
 // median external diffuse illuminance gives the EN 17037 daylight-factor targets
 // (grid_metrics.hpp, DaylightProvision).
 struct Site {
   double latitudeDegrees = 0.0, longitudeDegrees = 0.0;  // °, north and east positive
   double timezoneHours = 0.0;                            // h east of UTC
-  double northDegrees = 0.0;  // °: the direction of north (read, not yet used)
+  // °: true north, counter-clockwise from the scene's +y seen from above (0: north +y, east +x)
+  double northDegrees = 0.0;
   // lx: E_v,d,med, the median of the site's diffuse horizontal illuminance over the 4380 daylit
   // hours of the year; no EN 17037 verdict without it.
   std::optional<double> medianDiffuseIlluminance;
+};
+
+// The sun of a daylight scene (`sun:`, docs/method.md "The sun"): a disk of kSunDiameterDegrees
+// whose direct normal illuminance is E_dn, at its position for the site's date and clock time.
+// It lights grids through the host's exact evaluation (illuminance/sunlight.hpp).
+inline constexpr double kSunDiameterDegrees = 0.53;
+
+struct Sun {
+  LocalInstant instant;                // the site's standard time
+  double directNormalIlluminance = 0;  // lx: E_dn, on a plane facing the sun, unobstructed
+  SolarPosition position;              // at the site, at `instant`
+  // Unit, towards the disk's centre at its apparent elevation, in the scene's frame (north at
+  // Site::northDegrees).
+  Vec3 direction = Vec3::UnitZ();
+  // Whether the centre is above the horizon (apparent elevation > 0°); below it the sun gives 0.
+  bool aboveHorizon() const { return position.apparentElevationDegrees > 0.0; }
 };
 
 // A camera for `penumbra render`: a pinhole at `eye` looking at `target`, `up` tilting the image
@@ -167,6 +185,7 @@ struct Scene {
   std::optional<Room> room;
   std::optional<Sky> sky;  // daylight through the room's openings (scene/daylight.hpp)
   std::optional<Site> site;
+  std::optional<Sun> sun;      // direct sunlight (illuminance/sunlight.hpp)
   ParameterValues parameters;  // the values it was built with: its defaults unless overridden
   // What loaded but is probably a mistake (docs/scene-format.md, "Warnings"), in file order.
   std::vector<SceneWarning> warnings;

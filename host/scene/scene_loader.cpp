@@ -23,6 +23,7 @@
 #include "scene/source_placement.hpp"
 #include "scene/spec_reader.hpp"
 #include "scene/strongest_source.hpp"
+#include "scene/sun_reader.hpp"
 
 namespace penumbra {
 namespace {
@@ -117,6 +118,7 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
     scene.sky = spec.sky;
   }
   scene.site = spec.site;
+  if (spec.sun) scene.sun = placeSun(*spec.sun, spec.site, context);
   // Sources before solids: a curved solid orients its facets towards the strongest source.
   for (const SourceSpec& source : spec.sources) {
     scene.sources.push_back(buildSource(source, scene.room, context));

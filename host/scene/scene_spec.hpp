@@ -152,12 +152,21 @@ struct LuminaireSpec {
   Where where;
 };
 
+// `sun: {date, time, direct_normal_illuminance_lx}` as read; its position needs the site.
+struct SunSpec {
+  CivilDate date;
+  double secondsOfDay = 0.0;           // s after the site's midnight, standard time
+  double directNormalIlluminance = 0;  // lx
+  Where where;
+};
+
 struct SceneSpec {
   std::vector<Material> materials;
   std::optional<RoomSpec> room;
   std::optional<Sky> sky;
   Where skyWhere;
   std::optional<Site> site;
+  std::optional<SunSpec> sun;
   std::vector<SolidSpec> solids;
   std::vector<SourceSpec> sources;
   std::vector<LuminaireSpec> luminaires;

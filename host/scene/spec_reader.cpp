@@ -9,6 +9,7 @@
 #include "scene/luminaire_reader.hpp"
 #include "scene/observer_reader.hpp"
 #include "scene/shape_reader.hpp"
+#include "scene/sun_reader.hpp"
 #include "scene/view_reader.hpp"
 
 namespace penumbra::scenefile {
@@ -155,7 +156,7 @@ Sky readSky(const Reader& reader, const Field& field) {
 }
 
 // `site: {latitude_deg, longitude_deg, timezone_h, north_deg, median_diffuse_illuminance_lx}`:
-// the position kept for the sun's position, E_v,d,med for the EN 17037 verdict.
+// the position that places the sun, E_v,d,med for the EN 17037 verdict.
 Site readSite(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "the site");
   map.allowOnly(
@@ -281,7 +282,7 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
   const MapView root = reader.map(reader.root(document), "the scene");
   // `parameters` was read first (parameter_reader.hpp): the other sections may use them.
   root.allowOnly({"penumbra", "parameters", "materials", "room", "solids", "sources", "grids",
-                  "views", "luminaires", "observers", "sky", "site"},
+                  "views", "luminaires", "observers", "sky", "site", "sun"},
                  "a scene");
   if (!root.has("penumbra")) {
     reader.fail(
@@ -303,6 +304,7 @@ SceneSpec readSceneSpec(const Reader& reader, const YAML::Node& document) {
     spec.skyWhere = sky->where;
   }
   if (const std::optional<Field> site = root.find("site")) spec.site = readSite(reader, *site);
+  if (const std::optional<Field> sun = root.find("sun")) spec.sun = readSun(reader, *sun);
   spec.solids = readList<SolidSpec>(
       reader, root, "solids", [&](const Field& item) { return readSolid(reader, item, material); });
   spec.sources = readList<SourceSpec>(reader, root, "sources",

@@ -44,6 +44,19 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
       h.add(opening.outer);
     }
   }
+  // The sun by where it is (date, time, site and north give it) and what it gives.
+  if (scene.sun) {
+    h.add(std::string_view("sun"));
+    h.add(scene.sun->direction);
+    h.add(scene.sun->directNormalIlluminance);
+    h.add(scene.sun->aboveHorizon() ? 1.0 : 0.0);
+    if (scene.room)
+      for (const Opening& opening : scene.room->openings) {
+        h.add(std::string_view("sun through " + opening.name));
+        h.add(opening.transmittance);
+        h.add(opening.outer);
+      }
+  }
   // A luminaire by what it emits (its table, so that an edited file counts) and where.
   for (const Luminaire& luminaire : scene.luminaires) {
     h.add(std::string_view("luminaire " + luminaire.name));

@@ -28,14 +28,14 @@ constexpr int kBlock = 11;
 // The HDR image is scaled linearly to [0, 2^32 - 1].
 constexpr double kHdrRange = 4294967295.0;
 
-struct Plane {
+struct LuminancePlane {
   int width = 0, height = 0;
   std::vector<double> v;
   double at(int x, int y) const { return v[static_cast<size_t>(y) * width + x]; }
 };
 
-Plane planeOf(const ScalarImage& image, double offset, double scale) {
-  Plane p{image.width, image.height, std::vector<double>(image.values.size())};
+LuminancePlane planeOf(const ScalarImage& image, double offset, double scale) {
+  LuminancePlane p{image.width, image.height, std::vector<double>(image.values.size())};
   for (size_t i = 0; i < p.v.size(); ++i) p.v[i] = (image.values[i] - offset) * scale;
   return p;
 }
@@ -43,8 +43,8 @@ Plane planeOf(const ScalarImage& image, double offset, double scale) {
 // The next coarser scale: the mean of each 2×2 block starting at even coordinates; a last odd
 // row or column is mirrored onto itself (MATLAB's symmetric border), so the size halves rounding
 // up.
-Plane halve(const Plane& p) {
-  Plane h{(p.width + 1) / 2, (p.height + 1) / 2, {}};
+LuminancePlane halve(const LuminancePlane& p) {
+  LuminancePlane h{(p.width + 1) / 2, (p.height + 1) / 2, {}};
   h.v.resize(static_cast<size_t>(h.width) * h.height);
   for (int y = 0; y < h.height; ++y) {
     const int y0 = 2 * y, y1 = std::min(2 * y + 1, p.height - 1);
@@ -80,7 +80,7 @@ double normalCdf(double x, double mean, double sigma) {
 // where σ̃ = Φ(σ; τ, τ/3) is the probability that a local standard deviation σ is seen, τ the
 // visibility threshold from the Mannos-Sakrison contrast sensitivity at `frequency` cycles/degree.
 // Moments are computed about each window's own mean (two passes), exact also at 2^32 scale.
-double localFidelity(const Plane& hdr, const Plane& ldr, double frequency) {
+double localFidelity(const LuminancePlane& hdr, const LuminancePlane& ldr, double frequency) {
   const auto window = gaussianWindow();
   const double sensitivity =
       100 * 2.6 * (0.0192 + 0.114 * frequency) * std::exp(-std::pow(0.114 * frequency, 1.1));
@@ -139,8 +139,8 @@ TmqiScore structuralFidelity(const ScalarImage& hdrLuminance, const ScalarImage&
   const auto [low, high] =
       std::minmax_element(hdrLuminance.values.begin(), hdrLuminance.values.end());
   if (!(*high > *low)) throw std::invalid_argument("TMQI: the HDR image is flat");
-  Plane hdr = planeOf(hdrLuminance, *low, kHdrRange / (double(*high) - *low));
-  Plane ldr = planeOf(displayLuminance, 0, 1);
+  LuminancePlane hdr = planeOf(hdrLuminance, *low, kHdrRange / (double(*high) - *low));
+  LuminancePlane ldr = planeOf(displayLuminance, 0, 1);
   TmqiScore score;
   score.structuralFidelity = 1;
   double frequency = kFinestFrequency;

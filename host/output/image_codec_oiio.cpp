@@ -1,4 +1,4 @@
-#include "output/image_files.hpp"
+#include "output/image_codec.hpp"
 
 #include <unistd.h>
 
@@ -10,7 +10,9 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
-namespace penumbra {
+// The image files through OpenImageIO, compiled into the module penumbra_image_io only
+// (image_codec.hpp says why); image_module.cpp forwards image_files.hpp's functions here.
+namespace penumbra::image_codec {
 namespace {
 
 namespace fs = std::filesystem;
@@ -189,4 +191,21 @@ ImageMetadata readImageMetadata(const fs::path& path) {
   return metadata;
 }
 
-}  // namespace penumbra
+}  // namespace penumbra::image_codec
+
+// The module's one exported symbol.
+extern "C" __attribute__((visibility("default"))) const penumbra::ImageCodec*
+penumbra_image_codec() {
+  namespace c = penumbra::image_codec;
+  static const penumbra::ImageCodec codec{penumbra::kImageCodecVersion,
+                                          c::writeRgbExr,
+                                          c::writeScalarExr,
+                                          c::writeFaceIdExr,
+                                          c::writeRadianceHdr,
+                                          c::writePng,
+                                          c::readRgbExr,
+                                          c::readScalarExr,
+                                          c::readFaceIdExr,
+                                          c::readImageMetadata};
+  return &codec;
+}
