@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
       throw std::runtime_error("the image is not the size of the render");
     }
     // A pixel at 0 has no ratio: count it as the display's black.
-    ScalarImage v = displayValueOf(image);
+    // The PNG as `penumbra tonemap` writes it with its default display (100 cd/m², no ambient).
+    ScalarImage v = displayValueOf(image, DisplayModel{100.0, black, 0.0});
     for (float& x : v.values) x = std::max(x, 0.5f / 255);
     const EdgeContrastShare share = measureEdgeContrast(hdr, faces, v, black, tolerance);
     std::cout << nlohmann::json{{"image", argv[3]},

@@ -425,6 +425,53 @@ TEST(IntervalSampling, AgreesWithTheExactModeAndIsExactOnFaceBoundaries) {
   }
 }
 
+// What the issue of interval mode asks of k = 8, measured on what the picture shows, the luminance
+// Y of the RGB image: within 0.5 % of the 99th percentile of the exact (k = 1) image at every
+// pixel, and within 1 % of its own value at every pixel above 1 % of that percentile. The
+// office's two views at 320 × 180 (an interval spans four times the scene it spans at 1280 × 720,
+// so the light curves more within it), direct light: the interval plan decides the direct light
+// only.
+TEST(IntervalSampling, EightStaysWithinTheBoundsOfTheExactImage) {
+  Scene scene = loadScene(PENUMBRA_SOURCE_DIR "/data/office.yaml");
+  Renderer renderer(cpuDevice(), scene);
+  const auto luminanceY = [](const RgbImage& image, std::size_t i) {
+    return 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] +
+           0.0722 * image.rgb[i * 3 + 2];
+  };
+  for (const View& full : scene.views) {
+    View view = full;
+    view.width = 320;
+    view.height = 180;
+    const RenderedView exact = renderer.render(view, RenderOptions{1, 1, {}});
+    const RenderedView sampled = renderer.render(view, RenderOptions{8, 1, {}});
+    const std::size_t n = exact.luminance.rgb.size() / 3;
+    std::vector<double> sorted(n);
+    for (std::size_t i = 0; i < n; ++i) sorted[i] = luminanceY(exact.luminance, i);
+    const std::size_t at = static_cast<std::size_t>(0.99 * (n - 1));
+    std::nth_element(sorted.begin(), sorted.begin() + at, sorted.end());
+    const double p99 = sorted[at];
+    ASSERT_GT(p99, 0.0);
+    double worst = 0, worstRelative = 0;
+    int bright = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double y1 = luminanceY(exact.luminance, i), y8 = luminanceY(sampled.luminance, i);
+      worst = std::max(worst, std::abs(y8 - y1));
+      if (y1 > 0.01 * p99) {
+        ++bright;
+        worstRelative = std::max(worstRelative, std::abs(y8 - y1) / y1);
+      }
+    }
+    std::printf(
+        "%s k = 8: exact share %.3f, worst %.4f %% of p99 (%.1f cd/m2), worst %.4f %% "
+        "per pixel above 1 %% of p99\n",
+        view.name.c_str(), sampled.stats.exactShare(), 100 * worst / p99, p99, 100 * worstRelative);
+    EXPECT_LE(worst, 0.005 * p99) << view.name;
+    EXPECT_LE(worstRelative, 0.01) << view.name;
+    EXPECT_GT(bright, static_cast<int>(n / 2)) << view.name;  // the bound covers most pixels
+    EXPECT_LT(sampled.stats.exactShare(), 0.6) << view.name;  // and k = 8 interpolates
+  }
+}
+
 TEST(Supersampling, APixelIsTheMeanOfItsSamples) {
   Scene scene = randomBoxes(3, 12);
   const View view = makeView({-1.0, -1.0, 2.0}, {2.0, 2.0, 0.3}, 40, 24);

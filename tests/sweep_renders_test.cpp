@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -160,9 +161,10 @@ RenderSweep renderSweep(const fs::path& dir, const std::string& exposure) {
   return sweep;
 }
 
-// With a fixed exposure (`sweep --exposure 40`) every case's PNG shows a luminance L as the drive
-// value 255 × L / 40 cd/m² (cut to the display's black and white): the same cd/m² is the same
-// pixel value in both cases, the floor (its reflectance tripled) three times as bright.
+// With a fixed exposure (`sweep --exposure 40`) every case's PNG shows a luminance L as the code
+// value that shows V = L / 40 cd/m² of the display's white (cut to its black and white): the same
+// cd/m² is the same pixel value in both cases, the floor (its reflectance tripled) three times as
+// bright.
 TEST(SweepRenders, AFixedExposureShowsTheSameLuminanceAsTheSamePixelValueInEveryCase) {
   TempDir dir("penumbra-sweep-renders");
   const double white = 40.0, black = ToneMapOptions{}.black;  // cd/m²; fraction of white
@@ -185,7 +187,7 @@ TEST(SweepRenders, AFixedExposureShowsTheSameLuminanceAsTheSamePixelValueInEvery
         const size_t at = (static_cast<size_t>(y) * png[c].width + x) * png[c].channels;
         drive[c] = *std::max_element(&png[c].values[at], &png[c].values[at] + 3);
         // Rounded to the nearest of 256 levels.
-        EXPECT_NEAR(drive[c], 255.0 * v, 0.5 + 1e-3) << x << "," << y;
+        EXPECT_NEAR(drive[c], testing::expectedCode(v, black), 0.5 + 1e-3) << x << "," << y;
         if (v > black && v < 1.0) ++shown;
       }
       if (luminance[0].pixel(x, y)[1] == luminance[1].pixel(x, y)[1]) {
@@ -251,7 +253,7 @@ std::vector<int> drives(const fs::path& png) {
 
 // auto-all: one white for the whole study, the geometric mean of the cases' own automatic whites
 // (each computed here from the case's .exr); with it a pixel of twice the luminance shows twice
-// the drive value. Exposed case by case instead, the two PNGs are the same picture.
+// the display luminance. Exposed case by case instead, the two PNGs are the same picture.
 TEST(SweepRenders, AutoAllExposesTheWholeStudyWithOneWhite) {
   TempDir dir("penumbra-sweep-renders");
   SweepObserver silent;
@@ -295,11 +297,17 @@ TEST(SweepRenders, AutoAllExposesTheWholeStudyWithOneWhite) {
     for (int c = 0; c < 2; ++c) {
       const float* rgb = luminance[c].pixel(x, y);
       const double v = std::clamp(std::max({rgb[0], rgb[1], rgb[2]}) / white, black, 1.0);
-      EXPECT_NEAR(drive[c][i], 255.0 * v, 0.5 + 1e-3) << x << "," << y;
+      EXPECT_NEAR(drive[c][i], testing::expectedCode(v, black), 0.5 + 1e-3) << x << "," << y;
     }
-    // Between black and white in both: twice the drive value, to the rounding of each.
-    if (drive[0][i] > 255.0 * black + 1 && drive[1][i] < 255) {
-      EXPECT_NEAR(drive[1][i], 2.0 * drive[0][i], 1.5) << x << "," << y;
+    // Between black and white in both: twice the display luminance, to the rounding of each
+    // code (half a step either way).
+    const auto shown = [&](double code) {
+      return black + (1 - black) * testing::srgbLinearOf(code / 255.0);
+    };
+    if (drive[0][i] > 1 && drive[1][i] < 255) {
+      const double step = shown(drive[1][i] + 0.5) - shown(drive[1][i] - 0.5) +
+                          2 * (shown(drive[0][i] + 0.5) - shown(drive[0][i] - 0.5));
+      EXPECT_NEAR(shown(drive[1][i]), 2.0 * shown(drive[0][i]), 0.5 * step + 1e-9) << x << "," << y;
       ++doubled;
     }
   }
@@ -342,6 +350,40 @@ TEST(SweepRenders, AnUnknownViewIsAnErrorNamingTheScenesViews) {
     EXPECT_NE(std::string(e.what()).find("no view 'door'; its views are: corner"),
               std::string::npos)
         << e.what();
+  }
+}
+
+// `sweep --display-luminance 250 --ambient 400`: the target display is part of the renders' name,
+// so a folder rendered for the default display is computed again, and every case's PNG (auto-all
+// exposes them again after the cases) is encoded for that display, as its statistics and
+// render.json say.
+TEST(SweepRenders, TheTargetDisplayIsPartOfTheRendersAndEveryCaseUsesIt) {
+  TempDir dir("penumbra-sweep-renders");
+  SweepObserver silent;
+  const RenderSweep standard = fluxSweep(dir.path(), "auto-all");
+  EXPECT_EQ(runSweep(standard.study, standard.settings, silent).computed, 2u);
+
+  RenderSweep other = fluxSweep(dir.path(), "auto-all");
+  ToneMapOptions display;
+  display.displayLuminance = 250;
+  display.ambient = 400;
+  other.study.renderDisplay = renderDisplayName(display);
+  EXPECT_EQ(other.study.renderDisplay, "display=250cd/m2,ambient=400lx");
+  other.settings.caseOutputs = {std::make_shared<CaseRenders>(
+      other.study.renders, other.settings.estimator, "auto-all", other.settings.output, display)};
+  const SweepSummary summary = runSweep(other.study, other.settings, silent);
+  EXPECT_EQ(summary.computed, 2u);
+  EXPECT_EQ(summary.recomputed, 2u);
+  const double reflected = 0.01 * 400 / std::numbers::pi;
+  const double lowerBound = (ToneMapOptions{}.black * 250 + reflected) / (250 + reflected);
+  for (const char* folder : {"out/cases/case-001", "out/cases/case-002"}) {
+    const auto stats = nlohmann::json::parse(readText(dir.path() / folder / "corner.tonemap.json"));
+    EXPECT_EQ(stats["display_luminance_cdm2"], 250.0) << folder;
+    EXPECT_EQ(stats["ambient_lx"], 400.0) << folder;
+    EXPECT_NEAR(stats["lower_bound"].get<double>(), lowerBound, 1e-15) << folder;
+    const auto render = nlohmann::json::parse(readText(dir.path() / folder / "render.json"));
+    EXPECT_EQ(render["display_luminance_cdm2"], 250.0) << folder;
+    EXPECT_EQ(render["ambient_lx"], 400.0) << folder;
   }
 }
 

@@ -15,6 +15,10 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace penumbra {
 namespace {
 
@@ -45,7 +49,7 @@ TEST(ToneMapCli, WritesThePngAndItsStatistics) {
   EXPECT_EQ(stats["converged"], true);
   EXPECT_GT(stats["outer_iterations"].get<int>(), 0);
   EXPECT_TRUE(stats["residual"].contains("strong"));
-  // Tagged as drive values in the display's own encoding (docs/tonemap.md).
+  // Tagged as sRGB code values of display luminance (docs/tonemap.md).
   const ImageMetadata tags = readImageMetadata(dir.path() / "view.png");
   const auto tag = [&](const std::string& name) {
     for (const auto& [key, value] : tags) {
@@ -55,7 +59,90 @@ TEST(ToneMapCli, WritesThePngAndItsStatistics) {
   };
   EXPECT_EQ(tag("oiio:ColorSpace"), "sRGB");
   EXPECT_EQ(tag("penumbra:display"), "constraint");
-  EXPECT_NE(tag("penumbra:values").find("drive values"), std::string::npos);
+  EXPECT_NE(tag("penumbra:values").find("sRGB code values"), std::string::npos);
+  EXPECT_EQ(tag("penumbra:display_luminance"), "100 cd/m2");
+  EXPECT_EQ(stats["display_luminance_cdm2"], 100.0);
+  EXPECT_EQ(stats["ambient_lx"], 0.0);
+  EXPECT_EQ(stats["lower_bound"], 0.05);
+}
+
+// The PNG's own chunks, read from its bytes: sRGB (rendering intent), gAMA 1/2.2 as the PNG
+// specification's sRGB fallback gives it (45455) and cHRM with the Rec. 709 primaries and the D65
+// white (× 100 000), before the image data; the pixels have no other colour chunk.
+TEST(ToneMapCli, ThePngIsTaggedSrgbInItsChunks) {
+  const testing::TempDir dir("tonemap-cli");
+  const testing::HdrScene scene = testing::roomView(48, 27, 2);
+  writeRgbExr(dir.path() / "view.exr", scene.hdr);
+  writeFaceIdExr(dir.path() / "view.faceid.exr", scene.faces);
+  ASSERT_EQ(runPenumbra(dir.path(), "tonemap view.exr -o view.png").status, 0);
+  const std::vector<testing::PngChunk> chunks = testing::readPngChunks(dir.path() / "view.png");
+  const auto find = [&](const std::string& type) {
+    return std::find_if(chunks.begin(), chunks.end(),
+                        [&](const testing::PngChunk& c) { return c.type == type; });
+  };
+  ASSERT_FALSE(chunks.empty());
+  EXPECT_EQ(chunks.front().type, "IHDR");
+  const auto srgb = find("sRGB"), gama = find("gAMA"), chrm = find("cHRM"), idat = find("IDAT");
+  ASSERT_NE(srgb, chunks.end());
+  ASSERT_NE(gama, chunks.end());
+  ASSERT_NE(chrm, chunks.end());
+  ASSERT_NE(idat, chunks.end());
+  EXPECT_LT(srgb, idat);
+  EXPECT_LT(gama, idat);
+  EXPECT_LT(chrm, idat);
+  ASSERT_EQ(srgb->data.size(), 1u);
+  EXPECT_LE(srgb->data[0], 3);  // one of the four rendering intents
+  ASSERT_EQ(gama->data.size(), 4u);
+  EXPECT_EQ(testing::pngUint32(gama->data.data()), 45455u);
+  ASSERT_EQ(chrm->data.size(), 32u);
+  const uint32_t rec709[8] = {31270, 32900, 64000, 33000, 30000, 60000, 15000, 6000};
+  for (int i = 0; i < 8; ++i) EXPECT_EQ(testing::pngUint32(&chrm->data[4 * i]), rec709[i]) << i;
+  EXPECT_EQ(find("iCCP"), chunks.end());  // sRGB and iCCP exclude each other
+}
+
+// --display-luminance and --ambient: a grey picture with a fixed exposure shows each pixel's
+// luminance L at the display luminance V·(Lmax + R), V = L / white cut to [black, 1], R = 0.01
+// E/π reflected; its code value inverts L = (Lmax − Lblack) F(code) + Lblack + R. The options are
+// in the statistics and the PNG's text chunks.
+TEST(ToneMapCli, TheDisplayOptionsEncodeForThatDisplay) {
+  const testing::TempDir dir("tonemap-cli");
+  RgbImage grey(64, 1);
+  FaceIdImage faces(64, 1);
+  for (int x = 0; x < 64; ++x) {
+    const float l = 0.5f * static_cast<float>(std::pow(1.1, x));  // 0.5 to 205 cd/m²
+    for (int c = 0; c < 3; ++c) grey.pixel(x, 0)[c] = l;
+    faces.ids[x] = 1;
+  }
+  writeRgbExr(dir.path() / "grey.exr", grey);
+  writeFaceIdExr(dir.path() / "grey.faceid.exr", faces);
+  const double white = 120, peak = 250, ambient = 400, black = 0.01;
+  const Result r = runPenumbra(dir.path(),
+                               "tonemap grey.exr -o grey.png --exposure 120 --black 0.01 "
+                               "--display-luminance 250 --ambient 400");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const double reflected = 0.01 * ambient / std::numbers::pi;
+  const double lowerBound = (black * peak + reflected) / (peak + reflected);
+  const DisplayImage png = readPng(dir.path() / "grey.png");
+  int between = 0;
+  for (int x = 0; x < 64; ++x) {
+    const double v = std::clamp(grey.pixel(x, 0)[0] / white, lowerBound, 1.0);
+    const double shown = v * (peak + reflected);
+    const double code =
+        testing::srgbCodeOf((shown - black * peak - reflected) / (peak - black * peak));
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(png.values[x * 3 + c], 255 * code, 0.5 + 1e-6) << x;
+    between += v > lowerBound && v < 1;
+  }
+  EXPECT_GT(between, 20);
+  const auto stats = nlohmann::json::parse(testing::readText(dir.path() / "grey.tonemap.json"));
+  EXPECT_EQ(stats["display_luminance_cdm2"], peak);
+  EXPECT_EQ(stats["ambient_lx"], ambient);
+  EXPECT_NEAR(stats["lower_bound"].get<double>(), lowerBound, 1e-15);
+  bool tagged = false;
+  for (const auto& [key, value] : readImageMetadata(dir.path() / "grey.png"))
+    tagged |= key == "penumbra:ambient" && value.starts_with("400 lx");
+  EXPECT_TRUE(tagged);
+  EXPECT_EQ(runPenumbra(dir.path(), "tonemap grey.exr -o bad.png --display-luminance 0").status, 1);
+  EXPECT_EQ(runPenumbra(dir.path(), "tonemap grey.exr -o bad.png --ambient -5").status, 1);
 }
 
 TEST(ToneMapCli, BaselinesGoThroughTheSameOutput) {

@@ -1,6 +1,7 @@
 #pragma once
 // The display options shared by `penumbra tonemap` and `penumbra render`: one function, so that
 // both commands take the same flags with the same defaults and checks.
+#include <array>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,30 @@
 #include "tonemap/tone_map_options.hpp"
 
 namespace penumbra::cli {
+
+// The display the PNG is encoded for (docs/tonemap.md, "The display model"): also on `sweep`,
+// whose renders take no other display option. Returns the two options.
+inline std::array<CLI::Option*, 2> addTargetDisplayOptions(CLI::App& command,
+                                                           ToneMapOptions& options) {
+  CLI::Option* luminance =
+      command
+          .add_option(
+              "--display-luminance", options.displayLuminance,
+              "The target display's white in cd/m2: the PNG holds the sRGB code values that "
+              "show the tone map's luminances on it")
+          ->capture_default_str()
+          ->check(CLI::Range(1.0, 1e5))
+          ->type_name("CDM2");
+  CLI::Option* ambient =
+      command
+          .add_option("--ambient", options.ambient,
+                      "Illuminance on the display's screen from the room around it, lx: its "
+                      "reflection (1 %) lifts the display's black, and the tone map works above it")
+          ->capture_default_str()
+          ->check(CLI::Range(0.0, 1e5))
+          ->type_name("LX");
+  return {luminance, ambient};
+}
 
 inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
   // By name only (a plain enum option would also take 0, 1, 2 and print them in --help).
@@ -32,6 +57,7 @@ inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
       ->check(CLI::PositiveNumber)
       ->excludes(display)
       ->type_name("CDM2");
+  addTargetDisplayOptions(command, options);
   command
       .add_option("--black", options.black,
                   "The display's black as a fraction of its white (LowerBound)")

@@ -69,6 +69,8 @@ int run(const RenderCommandOptions& options) {
   report.interval = options.interval;
   report.spp = options.spp;
   report.display = displayMethodName(options.display.method);
+  report.displayLuminance = options.display.displayLuminance;
+  report.ambient = options.display.ambient;
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
   }

@@ -39,8 +39,9 @@ inline CLI::App* addRenderCommand(CLI::App& app, RenderCommandOptions& options,
       ->allow_extra_args(false);
   command
       ->add_option("--interval", options.interval,
-                   "k: exact illuminance every k pixels along a row, interpolated between "
-                   "(never across a face or shadow boundary); 1 = every pixel")
+                   "k: exact illuminance every k pixels along a row, interpolated between where "
+                   "the light is smooth (never across a face or shadow boundary; midpoint and "
+                   "curvature checked to 0.1 %); 1 = every pixel")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   command

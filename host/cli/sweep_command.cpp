@@ -146,13 +146,19 @@ int runSweepCommand(const SweepOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     Study study = loadStudy(options.study);
     study.renderExposure = options.exposure;
+    study.renderDisplay = renderDisplayName(options.renderDisplay);
     if (!options.exposure.empty() && study.renders.empty()) {
       throw std::invalid_argument("--exposure: the study renders nothing (it has no `renders:`)");
     }
+    if (!study.renderDisplay.empty() && study.renders.empty()) {
+      throw std::invalid_argument(
+          "--display-luminance, --ambient: the study renders nothing (it has no `renders:`)");
+    }
     // Renders need no display: host/ writes them, on the device the grids use.
     if (!study.renders.empty() && !options.estimator.reference) {
-      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(
-          study.renders, options.estimator, options.exposure, options.output));
+      settings.caseOutputs.push_back(std::make_shared<CaseRenders>(study.renders, options.estimator,
+                                                                   options.exposure, options.output,
+                                                                   options.renderDisplay));
     }
     SweepProgress progress(!options.quiet);
     const SweepSummary summary = runSweep(study, settings, progress);

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "output/sweep_files.hpp"
+#include "tonemap/tone_map_options.hpp"
 
 namespace penumbra {
 
@@ -24,6 +25,8 @@ struct SweepOptions {
   bool dryRun = false;
   // --exposure for the renders: "" (each case on its own), a white in cd/m², or "auto-first".
   std::string exposure;
+  // --display-luminance and --ambient for the renders (only those two fields are used).
+  ToneMapOptions renderDisplay;
   ChartWriter charts;  // set by main() when the binary has viz/
   std::vector<std::shared_ptr<CaseOutputWriter>> caseOutputs;  // likewise (per-case plots)
 };

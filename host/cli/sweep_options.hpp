@@ -3,6 +3,7 @@
 // main.cpp so that main() only registers and dispatches.
 #include <CLI/CLI.hpp>
 
+#include "cli/display_options.hpp"
 #include "cli/help_text.hpp"
 #include "cli/option_checks.hpp"
 #include "cli/sweep_command.hpp"
@@ -52,6 +53,10 @@ inline CLI::App* addSweepCommand(CLI::App& app, SweepOptions& options) {
       ->check(kStudyExposure)
       ->excludes(slurm)
       ->type_name("CDM2|auto-first|auto-all");
+  // The renders' target display; part of the renders' name, so that a case rendered for
+  // another display is computed again and every case's PNG is for the same display.
+  for (CLI::Option* option : addTargetDisplayOptions(*command, options.renderDisplay))
+    option->excludes(slurm);
   return command;
 }
 

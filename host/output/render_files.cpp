@@ -100,6 +100,8 @@ nlohmann::json renderJson(const RenderReport& report) {
       {"interval", report.interval},
       {"spp", report.spp},
       {"display", report.display},
+      {"display_luminance_cdm2", report.displayLuminance},
+      {"ambient_lx", report.ambient},
       {"light", illuminanceMeaning(report.interreflection.has_value(), report.luminaires)},
       {"units", {{"luminance", "cd/m2"}, {"illuminance", "lx"}}},
       {"total_s", report.totalSeconds},
@@ -134,7 +136,7 @@ std::vector<std::string> writeRenderFiles(const RenderReport& report,
     writeFaceIdExr(dir / (stem + ".faceid.exr"), r.faces,
                    viewMetadata(report, r.view, "face id (0: none)"));
     writeToneMapFiles(dir / (stem + ".png"), files.display, files.toneMap,
-                      viewMetadata(report, r.view, "display drive values"));
+                      viewMetadata(report, r.view, "sRGB code values of display luminance"));
     displays.push_back(stem + ".png");
   }
   writeFile(dir / "render.json",

@@ -32,6 +32,8 @@ struct RenderReport {
   std::string device;
   int interval = 1, spp = 1;
   std::string display;  // how the PNG was made
+  // The display the PNG is encoded for (tonemap/display_model.hpp): white in cd/m², lx on it.
+  double displayLuminance = 100.0, ambient = 0.0;
   // The interreflection solver's report; empty when the images show direct light only.
   std::optional<InterreflectionReport> interreflection;
   std::vector<LuminaireReport> luminaires;  // the scene's photometric luminaires

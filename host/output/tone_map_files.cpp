@@ -19,6 +19,10 @@ nlohmann::json toneMapStatsJson(const ToneMapStats& s) {
       {"method", s.method},
       {"black", s.black},
       {"white_cdm2", s.white},
+      {"display_luminance_cdm2", s.displayLuminance},
+      {"ambient_lx", s.ambient},
+      {"reflectivity", DisplayModel::kReflectivity},
+      {"lower_bound", s.lowerBound},
       {"weights", {{"strong", s.strong}, {"medium", s.medium}, {"weak", s.weak}}},
       {"lattice_px", s.lattice},
       {"width", s.width},
@@ -49,10 +53,17 @@ std::filesystem::path toneMapStatsPath(const std::filesystem::path& png) {
 
 ImageMetadata toneMapPngMetadata(const ToneMapStats& s) {
   return {
+      // OpenImageIO writes the PNG's sRGB chunk with gAMA and cHRM for this colour space.
       {"oiio:ColorSpace", "sRGB"},
-      {"penumbra:values", "drive values V (Fang, Space 4); no transfer curve added"},
+      {"penumbra:values",
+       "sRGB code values: the display luminance each pixel is meant to show on the display "
+       "below, through its model L = (Lmax - Lblack) sRGB(V) + Lblack + k E_amb / pi"},
       {"penumbra:display", s.method},
       {"penumbra:black", fmt::format("{}", s.black)},
+      {"penumbra:display_luminance", fmt::format("{} cd/m2", s.displayLuminance)},
+      {"penumbra:ambient",
+       fmt::format("{} lx, reflectivity {}", s.ambient, DisplayModel::kReflectivity)},
+      {"penumbra:lower_bound", fmt::format("{}", s.lowerBound)},
       {"penumbra:weights", fmt::format("strong={} medium={} weak={}", s.strong, s.medium, s.weak)},
       {"penumbra:lattice", fmt::format("{}", s.lattice)},
       {"penumbra:white", fmt::format("{} cd/m2", s.white)},

@@ -15,9 +15,9 @@ nlohmann::json toneMapStatsJson(const ToneMapStats& stats);
 // out/from-door.png → out/from-door.tonemap.json
 std::filesystem::path toneMapStatsPath(const std::filesystem::path& png);
 
-// The PNG holds drive values (Fang's V of Space 4: what goes to the display's DAC, no transfer
-// curve added), so it is tagged sRGB, the encoding a viewer assumes for such values; the method,
-// black level and weights go into its text chunks.
+// The PNG holds sRGB code values of the display luminance the tone map asks for on its target
+// display (tonemap/display_model.hpp), tagged sRGB (the sRGB, gAMA and cHRM chunks); the method,
+// the display, black level and weights go into its text chunks.
 ImageMetadata toneMapPngMetadata(const ToneMapStats& stats);
 
 // Writes the PNG (with `metadata` added to the tone map's own) and the JSON beside it.

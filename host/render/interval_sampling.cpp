@@ -5,20 +5,76 @@
 
 namespace penumbra {
 
+struct IntervalPlan::Context {
+  std::span<const ShadowClass> classes;
+  int columns = 0;
+  std::span<const SampleValues> checked;
+
+  bool sameClasses(std::size_t i, std::size_t j) const {
+    return std::equal(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
+                      classes.begin() + j * columns);
+  }
+  bool inPenumbra(std::size_t i) const {
+    return std::any_of(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
+                       [](ShadowClass c) { return c == ShadowClass::Penumbra; });
+  }
+  // Whether the value at `m`, a share t of the way from `a` to `b`, lies within `tolerance` of
+  // the line between them (relative to the largest of the three), in every channel.
+  bool onLine(std::size_t a, std::size_t m, std::size_t b, double t, double tolerance) const {
+    for (const SampleValues& set : checked)
+      for (int c = 0; c < set.channels; ++c) {
+        const double va = set.values[a * set.channels + c], vb = set.values[b * set.channels + c],
+                     vm = set.values[m * set.channels + c];
+        const double scale = std::max({std::abs(va), std::abs(vb), std::abs(vm)});
+        if (std::abs(vm - (va + t * (vb - va))) > tolerance * scale) return false;
+      }
+    return true;
+  }
+  // Whether the second difference through p, q, r (equally spaced) predicts a linear
+  // interpolation error |Δ²|/8 of at most kInterpolationError of the values, in every channel.
+  bool gentlyCurved(std::size_t p, std::size_t q, std::size_t r) const {
+    for (const SampleValues& set : checked)
+      for (int c = 0; c < set.channels; ++c) {
+        const double vp = set.values[p * set.channels + c], vq = set.values[q * set.channels + c],
+                     vr = set.values[r * set.channels + c];
+        const double scale = std::max({std::abs(vp), std::abs(vq), std::abs(vr)});
+        if (std::abs(vp - 2 * vq + vr) / 8 > kInterpolationError * scale) return false;
+      }
+    return true;
+  }
+};
+
 IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> faceIds,
-                           std::span<const uint8_t> needed, int interval) {
+                           std::span<const uint8_t> needed, int interval)
+    : width_(width),
+      faceIds_(faceIds.begin(), faceIds.end()),
+      known_(static_cast<std::size_t>(width) * height, 0) {
   const int k = std::max(interval, 1);
+  // (a) in the other direction: a sample whose neighbour above or below shows another face (or
+  // none) is exact, and cuts its interval there. The light changes fastest where surfaces meet
+  // (contact shadows at a desk's foot, a wall's corner), and a row's interval cannot see it.
+  const auto besideAnEdge = [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>(y) * width + x;
+    return (y > 0 && faceIds[i - width] != faceIds[i]) ||
+           (y + 1 < height && faceIds[i + width] != faceIds[i]);
+  };
   for (int y = 0; y < height; ++y) {
     const std::size_t row = static_cast<std::size_t>(y) * width;
     for (int a = 0; a < width; a += k) {
       const int b = std::min(a + k, width - 1);
       if (needed[row + a]) first_.push_back(row + a);
       if (b <= a) break;  // the last sample of the row was this interval's start
-      // Interpolation needs both ends on the same face and nothing else in between.
+      // (a) Interpolation needs both ends on the same face and nothing else in between.
       bool uniform = needed[row + a] != 0;
       for (int x = a + 1; x <= b && uniform; ++x) uniform = faceIds[row + x] == faceIds[row + a];
-      if (uniform && b - a >= 2) {
-        undecided_.push_back(Interval{row + a, row + b});
+      if (uniform) {
+        int start = a;
+        for (int x = a + 1; x <= b; ++x) {
+          if (x < b && !besideAnEdge(x, y)) continue;
+          if (x < b) first_.push_back(row + x);
+          if (x - start >= 2) ends_.push_back(Interval{row + start, row + x});
+          start = x;
+        }
       } else {
         for (int x = a + 1; x < b; ++x)
           if (needed[row + x]) first_.push_back(row + x);
@@ -29,59 +85,118 @@ IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> face
       }
     }
   }
+  requested_ = first_;
 }
 
-void IntervalPlan::appendInterior(const Interval& interval, std::vector<std::size_t>& out) {
-  for (std::size_t i = interval.a + 1; i < interval.b; ++i) out.push_back(i);
+void IntervalPlan::request(std::size_t sample, std::vector<std::size_t>& out) {
+  if (known_[sample]) return;
+  known_[sample] = 2;  // requested: known once its round is computed
+  out.push_back(sample);
 }
 
-std::vector<std::size_t> IntervalPlan::secondPass(std::span<const ShadowClass> classes,
-                                                  int sources) {
-  std::vector<std::size_t> next;
-  for (const Interval& interval : undecided_) {
-    bool same = true, penumbra = false;
-    for (int s = 0; s < sources; ++s) {
-      const ShadowClass ca = classes[interval.a * sources + s];
-      same &= ca == classes[interval.b * sources + s];
-      penumbra |= ca == ShadowClass::Penumbra;
+void IntervalPlan::requestInterior(const Interval& interval, std::vector<std::size_t>& out) {
+  for (std::size_t i = interval.a + 1; i < interval.b; ++i) request(i, out);
+}
+
+void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
+                              std::vector<std::size_t>& out) {
+  if (interval.b - interval.a < 2) return;  // nothing between
+  if (!c.sameClasses(interval.a, interval.b)) {
+    requestInterior(interval, out);  // (b)
+  } else if (interval.b - interval.a >= 3) {
+    // Lit or in umbra at both ends, with gentle curvature through the neighbouring intervals'
+    // ends on both sides: (e) at the interval's own length stands for (c).
+    const Curvature around = curvature(interval, c);
+    if (!c.inPenumbra(interval.a) && around.sides == 2 && around.gentle) {
+      interpolated_.push_back(interval);
+      return;
     }
-    if (!same) {
-      appendInterior(interval, next);
-    } else if (penumbra && interval.b - interval.a >= 3) {
-      next.push_back((interval.a + interval.b) / 2);
-      checking_.push_back(interval);
+    request((interval.a + interval.b) / 2, out);  // (c)
+    midpoints_.push_back(interval);
+  } else if (c.inPenumbra(interval.a)) {
+    // A single inner sample in a penumbra: checking it costs as much as computing it.
+    requestInterior(interval, out);
+  } else {
+    halves_.push_back(interval);  // a single inner sample, lit or in umbra: (e) decides
+  }
+}
+
+void IntervalPlan::decideMidpoint(const Interval& interval, const Context& c,
+                                  std::vector<std::size_t>& out) {
+  const std::size_t m = (interval.a + interval.b) / 2;
+  const double t = static_cast<double>(m - interval.a) / (interval.b - interval.a);
+  if (!c.sameClasses(interval.a, m) || !c.onLine(interval.a, m, interval.b, t, kMidpointMiss)) {
+    // Each half is an interval of its own, its ends known: (b), (c) and (e) again, so that a
+    // long interval costs no more than two short ones where the light bends.
+    ends_.push_back(Interval{interval.a, m});
+    ends_.push_back(Interval{m, interval.b});
+    return;
+  }
+  for (const Interval half : {Interval{interval.a, m}, Interval{m, interval.b}}) {
+    if (half.b - half.a < 2) continue;  // no sample between
+    if (c.inPenumbra(half.a) && half.b - half.a >= 3) {
+      request((half.a + half.b) / 2, out);  // (d)
+      midpoints_.push_back(half);
     } else {
-      // Lit or umbra throughout (or a single inner sample: interpolating it from its two
-      // neighbours costs as much to check as to compute, so compute it).
-      if (penumbra) {
-        appendInterior(interval, next);
-      } else {
-        interpolated_.push_back(interval);
-      }
+      halves_.push_back(half);
     }
   }
-  undecided_.clear();
-  return next;
 }
 
-std::vector<std::size_t> IntervalPlan::thirdPass(std::span<const float> illuminance) {
-  std::vector<std::size_t> next;
-  for (const Interval& interval : checking_) {
-    const std::size_t m = (interval.a + interval.b) / 2;
-    const double ea = illuminance[interval.a], eb = illuminance[interval.b], em = illuminance[m];
-    const double t = static_cast<double>(m - interval.a) / (interval.b - interval.a);
-    const double line = ea + t * (eb - ea);
-    const double scale = std::max({std::abs(ea), std::abs(eb), std::abs(em)});
-    if (std::abs(em - line) <= kPenumbraLinearity * scale) {
-      interpolated_.push_back(Interval{interval.a, m});
-      interpolated_.push_back(Interval{m, interval.b});
-    } else {
-      for (std::size_t i = interval.a + 1; i < interval.b; ++i)
-        if (i != m) next.push_back(i);
-    }
+IntervalPlan::Curvature IntervalPlan::curvature(const Interval& interval, const Context& c) const {
+  // The exact samples one length beyond each end, where they show the same face in the same
+  // classes (an edge or shadow boundary there says nothing about the curvature here).
+  const std::size_t length = interval.b - interval.a;
+  const std::size_t rowStart = interval.a - interval.a % width_;
+  const auto usable = [&](std::size_t neighbour, std::size_t end) {
+    return known_[neighbour] == 1 && faceIds_[neighbour] == faceIds_[end] &&
+           c.sameClasses(neighbour, end);
+  };
+  Curvature result;
+  if (interval.a >= rowStart + length && usable(interval.a - length, interval.a)) {
+    ++result.sides;
+    result.gentle &= c.gentlyCurved(interval.a - length, interval.a, interval.b);
   }
-  checking_.clear();
-  return next;
+  const std::size_t beyond = interval.b + length;
+  if (beyond < rowStart + width_ && usable(beyond, interval.b)) {
+    ++result.sides;
+    result.gentle &= c.gentlyCurved(interval.a, interval.b, beyond);
+  }
+  return result;
+}
+
+void IntervalPlan::decideHalf(const Interval& half, const Context& c,
+                              std::vector<std::size_t>& out) {
+  if (curvature(half, c).gentle) {  // (e)
+    interpolated_.push_back(half);
+  } else {
+    requestInterior(half, out);
+  }
+}
+
+std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes, int columns,
+                                            std::span<const SampleValues> checked) {
+  for (std::size_t i : requested_) known_[i] = 1;
+  requested_.clear();
+  const Context c{classes, columns, checked};
+  std::vector<std::size_t> out;
+  // The halves of the last call first: every sample it asked for is known now, so (e) sees the
+  // most neighbours. Then the midpoints it asked for, then the ends of the first pass.
+  while (out.empty() && !(halves_.empty() && midpoints_.empty() && ends_.empty())) {
+    std::vector<Interval> halves = std::move(halves_), midpoints = std::move(midpoints_),
+                          ends = std::move(ends_);
+    halves_.clear();
+    midpoints_.clear();
+    ends_.clear();
+    for (const Interval& half : halves) decideHalf(half, c, out);
+    for (const Interval& interval : midpoints) decideMidpoint(interval, c, out);
+    for (const Interval& interval : ends) decideEnds(interval, c, out);
+    // Halves found now wait for the next call unless nothing else is asked for: then they are
+    // decided at once, with what is known.
+  }
+  std::sort(out.begin(), out.end());
+  requested_ = out;
+  return out;
 }
 
 void IntervalPlan::interpolate(std::span<float> values, int channels) const {

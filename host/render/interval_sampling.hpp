@@ -1,19 +1,30 @@
 #pragma once
-// Interval sampling along scanlines (Nishita §2.5): illuminance is computed
-// exactly every k samples of a row and linearly interpolated between, except where that would
-// cross a boundary. k = 1 computes every sample and is the reference for the others.
+// Interval sampling along scanlines (Nishita §2.5): illuminance is computed exactly every k
+// samples of a row and interpolated linearly between where the plan finds the light smooth
+// enough. k = 1 computes every sample and is the reference for the others.
 //
-// The plan is made in rounds around the rounds of exact evaluation:
-//   1. firstPass(): the interval ends, and every sample of an interval that crosses a face
-//      boundary (its samples do not all show the same face);
-//   2. secondPass(classes): an interval whose ends differ in some source's shadow class (lit /
-//      penumbra / umbra; "receives nothing" counts as umbra) is computed whole. One whose ends
-//      are both lit or in umbra for every source is interpolated. One with a source in penumbra
-//      at its ends gets its midpoint computed: inside a penumbra E is smooth but not linear, and
-//      a shadow edge can run through an interval whose ends are both in penumbra;
-//   3. thirdPass(illuminance): such an interval is interpolated in two halves when its midpoint
-//      lies within kPenumbraLinearity of the straight line between its ends, and computed whole
-//      otherwise.
+// What decides where a sample is exact (docs/render.md says it with the measured errors):
+//   (a) face edges: an interval whose samples do not all show the same face is computed whole;
+//   (b) shadow classes: an interval whose ends differ in some source's or luminaire's shadow
+//       class (lit / penumbra / umbra; "receives nothing" counts as umbra) is computed whole;
+//   (c) the midpoint: an interval of 3 or more steps gets its midpoint computed, unless it is lit
+//       or in umbra at both ends and (e) at its own length passes on both sides (then it is
+//       interpolated whole); one of 2 steps goes to (e) directly, or is computed when a source
+//       is in penumbra. If the midpoint's classes differ from the ends', or the straight line
+//       between the ends misses any of its values by more than kMidpointMiss of that value, the
+//       two halves are decided as intervals of their own ((b), (c), (e): a long interval costs no
+//       more than two short ones where the light bends), otherwise the halves go on to (d), (e);
+//   (d) penumbra halves: a half with a source in penumbra at its ends (where E is smooth but not
+//       quadratic, and a shadow edge may run between two penumbra samples) of 3 or more steps
+//       gets its own midpoint, and (c) again;
+//   (e) neighbour second differences: a half is interpolated only if the second differences
+//       through its ends and the exact samples one half-length beyond them (same face, same
+//       classes) predict an interpolation error of at most kInterpolationError; otherwise it is
+//       computed whole.
+// The bound behind (c) and (e): for a quadratic the line between the ends misses the midpoint by
+// h²|E''|/8 over a length h, so a half misses by a quarter of what the whole missed at its
+// midpoint; kMidpointMiss = 4 · kInterpolationError, and (e) estimates the same h²|E''|/8 from
+// |second difference| / 8, at either end, so that curvature that changes along the row counts.
 // Only samples that need illuminance take part (`needed`: samples that show a solid's face).
 #include <cstddef>
 #include <cstdint>
@@ -24,23 +35,34 @@
 
 namespace penumbra {
 
+// Values per sample that the plan checks (E in lx, the RGB luminance), `channels` per sample.
+struct SampleValues {
+  std::span<const float> values;
+  int channels = 1;
+};
+
 class IntervalPlan {
  public:
-  // How far (relative to the largest E of the interval) a penumbra interval's midpoint may be
-  // off the line between its ends for the interval to be interpolated: 1 %, a tenth of what a
-  // lux meter's class-A tolerance allows, and invisible in a rendered image.
-  static constexpr double kPenumbraLinearity = 0.01;
+  // The largest interpolation error a half may have, relative to its own value (each channel):
+  // 0.1 %, a tenth of the 1 % a pixel may differ from the exact render and below what a display
+  // shows (one 8-bit step is 0.4 % or more).
+  static constexpr double kInterpolationError = 0.001;
+  // How far the straight line between an interval's ends may miss its midpoint: four times the
+  // above, because each half then misses by a quarter of it (for a quadratic).
+  static constexpr double kMidpointMiss = 4 * kInterpolationError;
 
   // `faceIds` row-major, width × height; `needed` marks the samples that need E.
   IntervalPlan(int width, int height, std::span<const uint32_t> faceIds,
                std::span<const uint8_t> needed, int interval);
 
-  // Samples to compute exactly first, in row-major order.
+  // Samples to compute exactly first, in row-major order: every interval's ends, and every
+  // sample of an interval across a face edge.
   const std::vector<std::size_t>& firstPass() const { return first_; }
-  // `classes[sample * sources + s]`, valid at every sample computed so far.
-  std::vector<std::size_t> secondPass(std::span<const ShadowClass> classes, int sources);
-  // `illuminance` valid at every sample computed so far.
-  std::vector<std::size_t> thirdPass(std::span<const float> illuminance);
+  // The next samples to compute, given the shadow classes (`classes[sample * columns + c]`)
+  // and the checked values at every sample computed so far; empty once every interval is
+  // decided.
+  std::vector<std::size_t> next(std::span<const ShadowClass> classes, int columns,
+                                std::span<const SampleValues> checked);
   // Fills every interpolated sample between its interval's ends, `channels` values per sample
   // in `values` (exact samples already filled).
   void interpolate(std::span<float> values, int channels) const;
@@ -49,10 +71,29 @@ class IntervalPlan {
   struct Interval {
     std::size_t a, b;  // exact ends; a < b, same row
   };
-  static void appendInterior(const Interval& interval, std::vector<std::size_t>& out);
+  struct Context;  // what one call of next() reads
+
+  void requestInterior(const Interval& interval, std::vector<std::size_t>& out);
+  void request(std::size_t sample, std::vector<std::size_t>& out);
+  void decideEnds(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
+  void decideMidpoint(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
+  void decideHalf(const Interval& half, const Context& c, std::vector<std::size_t>& out);
+  // (e): how many of the two neighbours one length beyond the ends could be used, and whether
+  // the second differences through them are gentle.
+  struct Curvature {
+    int sides = 0;
+    bool gentle = true;
+  };
+  Curvature curvature(const Interval& interval, const Context& c) const;
+
+  int width_ = 0;
+  std::vector<uint32_t> faceIds_;
+  std::vector<uint8_t> known_;  // 1: computed exactly, values given to the last next()
   std::vector<std::size_t> first_;
-  std::vector<Interval> undecided_;     // one face throughout: after the first pass
-  std::vector<Interval> checking_;      // penumbra intervals whose midpoint is computed
+  std::vector<std::size_t> requested_;  // returned by the last next(): known at the next call
+  std::vector<Interval> ends_;          // one face throughout, ends computed (also failed halves)
+  std::vector<Interval> midpoints_;     // midpoint requested
+  std::vector<Interval> halves_;        // passed (c) or (d), waiting for (e)
   std::vector<Interval> interpolated_;  // decided
 };
 

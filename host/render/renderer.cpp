@@ -215,11 +215,14 @@ struct Renderer::State {
     };
     const std::vector<std::size_t>& first = plan.firstPass();
     evaluate(camera, layer, first, classes, advance);
-    const std::vector<std::size_t> second = plan.secondPass(classes, columns);
-    evaluate(camera, layer, second, classes, advance);
-    const std::vector<std::size_t> third = plan.thirdPass(layer.illuminance);
-    evaluate(camera, layer, third, classes, advance);
-    stats.exactSamples += first.size() + second.size() + third.size();
+    stats.exactSamples += first.size();
+    // The plan checks what the image shows (RGB luminance) and the E AOV.
+    const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
+    for (std::vector<std::size_t> round = plan.next(classes, columns, checked); !round.empty();
+         round = plan.next(classes, columns, checked)) {
+      evaluate(camera, layer, round, classes, advance);
+      stats.exactSamples += round.size();
+    }
     plan.interpolate(layer.illuminance, 1);
     plan.interpolate(layer.rgb, 3);
     stats.illuminanceSeconds += secondsSince(start);

@@ -15,13 +15,23 @@
 
 namespace penumbra {
 
+std::string renderDisplayName(const ToneMapOptions& display) {
+  const ToneMapOptions standard;
+  if (display.displayLuminance == standard.displayLuminance && display.ambient == standard.ambient)
+    return "";
+  return fmt::format("display={}cd/m2,ambient={}lx", display.displayLuminance, display.ambient);
+}
+
 CaseRenders::CaseRenders(std::vector<std::string> views, EstimatorOptions estimator,
-                         std::string exposure, std::filesystem::path output)
+                         std::string exposure, std::filesystem::path output,
+                         const ToneMapOptions& display)
     : views_(std::move(views)),
       estimator_(std::move(estimator)),
       exposureText_(std::move(exposure)),
       exposure_(parseRenderExposure(exposureText_)),
       output_(std::move(output)) {
+  display_.displayLuminance = display.displayLuminance;
+  display_.ambient = display.ambient;
   if (exposure_.fixed()) display_.method = DisplayMethod::Clip;
   display_.white = exposure_.white;
   if (exposure_.autoFirst) {
@@ -34,7 +44,7 @@ CaseRenders::CaseRenders(std::vector<std::string> views, EstimatorOptions estima
 CaseRenders::~CaseRenders() = default;
 
 std::string CaseRenders::name() const {
-  return renderOutputName(views_, exposureText_);
+  return renderOutputName(views_, exposureText_, renderDisplayName(display_));
 }
 
 ToneMapOptions CaseRenders::displayFor(const RenderedView& rendered) {
@@ -69,6 +79,8 @@ std::vector<std::string> CaseRenders::write(const Scene& scene, const RunReport&
   renders.parameters = report.parameters;
   renders.device = report.device;
   renders.display = displayMethodName(display_.method);
+  renders.displayLuminance = display_.displayLuminance;
+  renders.ambient = display_.ambient;
   if (const InterreflectionReport* solved = renderer_->interreflection())
     renders.interreflection = *solved;
   renders.luminaires = report.luminaires;

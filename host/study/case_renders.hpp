@@ -19,14 +19,20 @@ namespace penumbra {
 // exposes the cases it adds as the first ones were.
 inline constexpr const char* kExposureJson = "exposure.json";
 
+// The target display as the renders' output name gives it: "" for the default display (100
+// cd/m², no ambient light), otherwise "display=200cd/m2,ambient=500lx".
+std::string renderDisplayName(const ToneMapOptions& display);
+
 class CaseRenders : public CaseOutputWriter {
  public:
   // The device as --device takes it (opened at the first case and kept), culling, and whether
   // the images include the interreflected light, on which mesh, as the sweep's grids do.
   // `exposure` as `sweep --exposure` takes it (render_exposure.hpp); `output` is the sweep's
   // folder (where auto-first keeps its white).
+  // `display` gives the target display (displayLuminance, ambient; its other fields are not
+  // used: the exposure decides the map).
   CaseRenders(std::vector<std::string> views, EstimatorOptions estimator, std::string exposure = "",
-              std::filesystem::path output = {});
+              std::filesystem::path output = {}, const ToneMapOptions& display = {});
   ~CaseRenders() override;
 
   std::string name() const override;

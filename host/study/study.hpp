@@ -41,15 +41,20 @@ struct Study {
   // The renders' exposure (`sweep --exposure`): "" each case on its own, a white in cd/m², or
   // "auto-first".
   std::string renderExposure;
+  // The renders' target display (`sweep --display-luminance/--ambient`): "" the default,
+  // otherwise renderDisplayName() of it.
+  std::string renderDisplay;
 };
 
 // The name of the render output for `views` ("renders:from-door,plan", "renders:plan
-// exposure=200"): the views and the exposure are part of the name, so a case rendered with other
-// views or another exposure is not finished for this study.
+// display=200cd/m2,ambient=500lx exposure=200"): the views, the target display and the exposure
+// are part of the name, so a case rendered with other views, for another display or with another
+// exposure is not finished for this study. The exposure comes last (exposedAsOne reads it there).
 inline std::string renderOutputName(const std::vector<std::string>& views,
-                                    const std::string& exposure) {
+                                    const std::string& exposure, const std::string& display = "") {
   std::string name = "renders:";
   for (std::size_t i = 0; i < views.size(); ++i) name += (i ? "," : "") + views[i];
+  if (!display.empty()) name += " " + display;
   return exposure.empty() ? name : name + " exposure=" + exposure;
 }
 
@@ -59,7 +64,7 @@ inline std::vector<std::string> requestedCaseOutputs(const Study& study) {
   std::vector<std::string> names;
   if (study.plots) names.push_back("plots");
   if (!study.renders.empty())
-    names.push_back(renderOutputName(study.renders, study.renderExposure));
+    names.push_back(renderOutputName(study.renders, study.renderExposure, study.renderDisplay));
   return names;
 }
 

@@ -21,9 +21,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// One rendered view of a case: its luminance, face ids and display PNG.
+// One rendered view of a case: its luminance, face ids and display PNG, and the display the PNG
+// is for (from render.json).
 struct CasePicture {
   fs::path luminance, faces, png;
+  double displayLuminance = 100.0, ambient = 0.0;
 };
 
 std::vector<CasePicture> studyPictures(const fs::path& out, const StudyLayout& layout) {
@@ -38,16 +40,20 @@ std::vector<CasePicture> studyPictures(const fs::path& out, const StudyLayout& l
       const nlohmann::json& files = view.at("files");
       pictures.push_back({folder / files.at("luminance_exr").get<std::string>(),
                           folder / files.at("faceid_exr").get<std::string>(),
-                          folder / files.at("display_png").get<std::string>()});
+                          folder / files.at("display_png").get<std::string>(),
+                          render.value("display_luminance_cdm2", ToneMapOptions{}.displayLuminance),
+                          render.value("ambient_lx", ToneMapOptions{}.ambient)});
     }
   }
   return pictures;
 }
 
-ToneMapOptions clipDisplay(double white) {
+ToneMapOptions clipDisplay(double white, const CasePicture& picture) {
   ToneMapOptions options;
   options.method = DisplayMethod::Clip;
   options.white = white;  // 0: automatic
+  options.displayLuminance = picture.displayLuminance;
+  options.ambient = picture.ambient;
   return options;
 }
 
@@ -56,7 +62,8 @@ ImageMetadata pngMetadata(const fs::path& exr, double white) {
   ImageMetadata metadata;
   for (const auto& [key, value] : readImageMetadata(exr)) {
     if (key.rfind("penumbra:", 0) != 0) continue;
-    metadata.emplace_back(key, key == "penumbra:units" ? "display drive values" : value);
+    metadata.emplace_back(
+        key, key == "penumbra:units" ? "sRGB code values of display luminance" : value);
   }
   metadata.emplace_back("penumbra:exposure", fmt::format("auto-all, white {} cd/m2", white));
   return metadata;
@@ -80,7 +87,7 @@ StudyExposure exposeStudyRenders(const fs::path& out, const StudyLayout& layout)
   double logSum = 0;
   for (const CasePicture& p : pictures) {
     ToneMapStats stats;
-    displayValues(readRgbExr(p.luminance), readFaceIdExr(p.faces), clipDisplay(0), &stats);
+    displayValues(readRgbExr(p.luminance), readFaceIdExr(p.faces), clipDisplay(0, p), &stats);
     logSum += std::log(stats.white);
   }
   exposure.white = std::exp(logSum / static_cast<double>(pictures.size()));
@@ -88,7 +95,7 @@ StudyExposure exposeStudyRenders(const fs::path& out, const StudyLayout& layout)
   for (const CasePicture& p : pictures) {
     ToneMapStats stats;
     const DisplayImage display = toneMap(readRgbExr(p.luminance), readFaceIdExr(p.faces),
-                                         clipDisplay(exposure.white), &stats);
+                                         clipDisplay(exposure.white, p), &stats);
     writeToneMapFiles(p.png, display, stats, pngMetadata(p.luminance, exposure.white));
   }
   writeTextFiles(out, {{kExposureJson, nlohmann::json{{"exposure", "auto-all"},

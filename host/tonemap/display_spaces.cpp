@@ -51,8 +51,13 @@ DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound) {
   return spaces;
 }
 
-DisplayImage deviceImage(const RgbImage& hdr, const DisplaySpaces& spaces,
-                         const ScalarImage& displayValue) {
+namespace {
+
+// HSV → RGB with the display V per pixel (Fig. 4.3), each channel's value in [0, 1] through
+// `toByte`. HSV → RGB is homogeneous in V: the Space-1 colour scaled by V / V1.
+template <typename ToByte>
+DisplayImage displayChannels(const RgbImage& hdr, const DisplaySpaces& spaces,
+                             const ScalarImage& displayValue, ToByte toByte) {
   DisplayImage image;
   image.width = hdr.width;
   image.height = hdr.height;
@@ -67,11 +72,28 @@ DisplayImage deviceImage(const RgbImage& hdr, const DisplaySpaces& spaces,
       // Space 1 of this channel; a grey (V1 = 0, S = 0) is V in every channel (Fig. 4.3).
       const double c1 = range > 0 ? (channel(hdr.rgb[i * 3 + c]) - spaces.minRgb) / range : v1;
       const double out = v1 > 0 ? c1 * (v / v1) : v;
-      image.values[i * 3 + c] =
-          static_cast<uint8_t>(std::lround(std::clamp(out, 0.0, 1.0) * 255.0));
+      image.values[i * 3 + c] = toByte(std::clamp(out, 0.0, 1.0));
     }
   }
   return image;
+}
+
+uint8_t byteOf(double unit) {
+  return static_cast<uint8_t>(std::lround(unit * 255.0));
+}
+
+}  // namespace
+
+DisplayImage deviceImage(const RgbImage& hdr, const DisplaySpaces& spaces,
+                         const ScalarImage& displayValue) {
+  return displayChannels(hdr, spaces, displayValue, byteOf);
+}
+
+DisplayImage encodedImage(const RgbImage& hdr, const DisplaySpaces& spaces,
+                          const ScalarImage& displayValue, const DisplayModel& display) {
+  return displayChannels(hdr, spaces, displayValue, [&display](double share) {
+    return byteOf(display.codeValueOfShare(share));
+  });
 }
 
 }  // namespace penumbra

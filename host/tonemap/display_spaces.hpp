@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "image/images.hpp"
+#include "tonemap/display_model.hpp"
 
 namespace penumbra {
 
@@ -31,5 +32,12 @@ DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound);
 // Space 4. HSV → RGB is homogeneous in V, so this is the Space-1 colour scaled by V_display / V1.
 DisplayImage deviceImage(const RgbImage& hdr, const DisplaySpaces& spaces,
                          const ScalarImage& displayValue);
+
+// What the PNG holds: the same HSV → RGB, each channel read as a display luminance target (its
+// share of the display's brightest, display_model.hpp) and encoded as the sRGB code value that
+// shows it there, ×255 rounded. spaces.lowerBound must be display.lowerBound(), so that the
+// darkest V is code 0 and V = 1 is code 255.
+DisplayImage encodedImage(const RgbImage& hdr, const DisplaySpaces& spaces,
+                          const ScalarImage& displayValue, const DisplayModel& display);
 
 }  // namespace penumbra

@@ -41,14 +41,14 @@ EdgeContrastShare measureEdgeContrast(const RgbImage& hdr, const FaceIdImage& fa
   return result;
 }
 
-ScalarImage displayValueOf(const DisplayImage& image) {
+ScalarImage displayValueOf(const DisplayImage& image, const DisplayModel& display) {
   ScalarImage values(image.width, image.height);
   for (size_t i = 0; i < values.values.size(); ++i) {
     uint8_t largest = 0;
     for (int c = 0; c < image.channels; ++c) {
       largest = std::max(largest, image.values[i * image.channels + c]);
     }
-    values.values[i] = largest / 255.0f;
+    values.values[i] = static_cast<float>(display.luminance(largest / 255.0) / display.brightest());
   }
   return values;
 }

@@ -5,6 +5,7 @@
 #include <cstddef>
 
 #include "image/images.hpp"
+#include "tonemap/display_model.hpp"
 
 namespace penumbra {
 
@@ -21,7 +22,8 @@ EdgeContrastShare measureEdgeContrast(const RgbImage& hdr, const FaceIdImage& fa
                                       const ScalarImage& displayValue, double black,
                                       double tolerance);
 
-// The display V of an 8-bit image: the largest channel / 255 (the thesis's V of Space 4).
-ScalarImage displayValueOf(const DisplayImage& image);
+// The display V of an 8-bit image as toneMap() writes it: the luminance `display` shows for the
+// largest channel's code value, as a share of its brightest (display_model.hpp).
+ScalarImage displayValueOf(const DisplayImage& image, const DisplayModel& display);
 
 }  // namespace penumbra

@@ -25,6 +25,12 @@ void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOpt
   if (!(options.white >= 0) || !std::isfinite(options.white)) {
     throw std::invalid_argument("--exposure: white must be a luminance above 0 cd/m2");
   }
+  if (!(options.displayLuminance > 0) || !std::isfinite(options.displayLuminance)) {
+    throw std::invalid_argument("--display-luminance: the display's white must be above 0 cd/m2");
+  }
+  if (!(options.ambient >= 0) || !std::isfinite(options.ambient)) {
+    throw std::invalid_argument("--ambient: the illuminance on the screen must be 0 lx or more");
+  }
   if (options.white > 0 && options.method != DisplayMethod::Clip) {
     throw std::invalid_argument(
         "a fixed exposure (--exposure) is a clip display: the other maps adapt to each picture");
@@ -115,6 +121,9 @@ ScalarImage displayValuesIn(const DisplaySpaces& spaces, const FaceIdImage& face
                             const ToneMapOptions& options, ToneMapStats& s) {
   s.method = displayMethodName(options.method);
   s.black = options.black;
+  s.displayLuminance = options.displayLuminance;
+  s.ambient = options.ambient;
+  s.lowerBound = spaces.lowerBound;
   s.strong = options.strong, s.medium = options.medium, s.weak = options.weak;
   s.lattice = options.lattice;
   s.width = spaces.width, s.height = spaces.height;
@@ -141,7 +150,8 @@ ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
   ToneMapStats local;
   ToneMapStats& s = stats ? *stats : local;
   s = ToneMapStats{};
-  ScalarImage display = displayValuesIn(displaySpaces(hdr, options.black), faces, options, s);
+  ScalarImage display =
+      displayValuesIn(displaySpaces(hdr, options.targetDisplay().lowerBound()), faces, options, s);
   s.totalSeconds = secondsSince(start);
   return display;
 }
@@ -153,8 +163,10 @@ DisplayImage toneMap(const RgbImage& hdr, const FaceIdImage& faces, const ToneMa
   ToneMapStats local;
   ToneMapStats& s = stats ? *stats : local;
   s = ToneMapStats{};
-  const DisplaySpaces spaces = displaySpaces(hdr, options.black);
-  DisplayImage image = deviceImage(hdr, spaces, displayValuesIn(spaces, faces, options, s));
+  const DisplayModel display = options.targetDisplay();
+  const DisplaySpaces spaces = displaySpaces(hdr, display.lowerBound());
+  DisplayImage image =
+      encodedImage(hdr, spaces, displayValuesIn(spaces, faces, options, s), display);
   s.totalSeconds = secondsSince(start);
   return image;
 }

@@ -7,12 +7,15 @@
 
 namespace penumbra {
 
-// Display V per pixel (the thesis's V after the solve, before HSV → RGB and rounding), in
-// [options.black, 1]. Tests and the edge-contrast measure read this; toneMap() quantises it.
+// Display V per pixel (the thesis's V after the solve, before HSV → RGB and rounding): the
+// display luminance target as a share of the target display's brightest, in
+// [options.targetDisplay().lowerBound(), 1] (options.black without ambient light). Tests and the
+// edge-contrast measure read this; toneMap() encodes it.
 ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
                           const ToneMapOptions& options, ToneMapStats* stats = nullptr);
 
-// The whole display step: display values, then hue and saturation back (Space 4, ×255 rounded).
+// The whole display step: display values, then hue and saturation back, each channel encoded as
+// the sRGB code value that shows it on the target display (display_model.hpp), ×255 rounded.
 DisplayImage toneMap(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOptions& options,
                      ToneMapStats* stats = nullptr);
 

@@ -3,6 +3,8 @@
 // Plain values: the CLI fills the options, the output layer writes the stats as JSON.
 #include <string>
 
+#include "tonemap/display_model.hpp"
+
 namespace penumbra {
 
 // clip and linear are the thesis's two straightforward maps (Fang, Fig. 4.1(b), eq. 4.2), shipped
@@ -30,6 +32,14 @@ struct ToneMapOptions {
   // clip only: the luminance shown as white, cd/m² (a fixed exposure: the same cd/m² gives the
   // same display value in every picture). 0: automatic, from each picture's own log average.
   double white = 0;
+  // The target display (display_model.hpp): its white in cd/m² and the illuminance on its
+  // screen from the room around it in lx. 100 cd/m² is an office monitor (sRGB's reference
+  // display is 80); ambient light raises the display's black and so the tone map's lower bound.
+  double displayLuminance = 100.0;
+  double ambient = 0.0;
+
+  // The display model of these options; its lowerBound() is the tone map's LowerBound.
+  DisplayModel targetDisplay() const { return DisplayModel{displayLuminance, black, ambient}; }
 };
 
 struct ToneMapStats {
@@ -38,6 +48,9 @@ struct ToneMapStats {
   double strong = 0, medium = 0, weak = 0;
   int lattice = 0;
   double white = 0;  // clip: the luminance shown as white, cd/m², fixed or automatic; 0 otherwise
+  double displayLuminance = 0;  // the target display's white, cd/m²
+  double ambient = 0;           // lx on its screen
+  double lowerBound = 0;        // the display's black over its white with the ambient light
   int width = 0, height = 0;
   int regions = 0;    // connected visible parts of faces
   int variables = 0;  // vertices, one V each
