@@ -20,9 +20,15 @@ std::recursive_mutex& registryMutex() {
   return mutex;
 }
 
-std::vector<std::filesystem::path>& registry() {
-  static std::vector<std::filesystem::path> paths;
-  return paths;
+// A registered staging directory and the folders its run created to hold it, outermost first.
+struct Staging {
+  std::filesystem::path path;
+  std::vector<std::filesystem::path> createdParents;
+};
+
+std::vector<Staging>& registry() {
+  static std::vector<Staging> entries;
+  return entries;
 }
 
 sigset_t interruptSignals() {
@@ -48,9 +54,13 @@ sigset_t interruptSignals() {
     // StagedDirectory's constructor creates it, after registering, which this lock blocks), so a
     // few passes do.
     std::error_code ec;
-    for (const auto& staging : registry())
-      for (int pass = 0; pass < 100 && std::filesystem::exists(staging, ec); ++pass)
-        std::filesystem::remove_all(staging, ec);
+    for (const Staging& staging : registry()) {
+      for (int pass = 0; pass < 100 && std::filesystem::exists(staging.path, ec); ++pass)
+        std::filesystem::remove_all(staging.path, ec);
+      // Then the folders the run created for it, innermost first, each only if now empty.
+      for (auto it = staging.createdParents.rbegin(); it != staging.createdParents.rend(); ++it)
+        std::filesystem::remove(*it, ec);
+    }
   }
   // End the way the signal would have ended it, so that a shell or a scheduler sees the cause.
   ::signal(signal, SIG_DFL);
@@ -70,17 +80,18 @@ void removeStagingOnInterrupt() {
   });
 }
 
-void registerStaging(const std::filesystem::path& staging) {
+void registerStaging(const std::filesystem::path& staging,
+                     const std::vector<std::filesystem::path>& createdParents) {
   std::lock_guard lock(registryMutex());
-  registry().push_back(staging);
+  registry().push_back({staging, createdParents});
 }
 
 void unregisterStaging(const std::filesystem::path& staging) {
   std::lock_guard lock(registryMutex());
-  auto& paths = registry();
-  if (const auto it = std::find(paths.begin(), paths.end(), staging); it != paths.end()) {
-    paths.erase(it);
-  }
+  auto& entries = registry();
+  const auto it = std::find_if(entries.begin(), entries.end(),
+                               [&](const Staging& entry) { return entry.path == staging; });
+  if (it != entries.end()) entries.erase(it);
 }
 
 InterruptDeferral::InterruptDeferral() {

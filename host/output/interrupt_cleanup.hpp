@@ -9,6 +9,7 @@
 // registered staging directory, and ends the process by the same signal. A child process started
 // by penumbra inherits the blocked mask: give it an unblocked one (posix_spawnattr_setsigmask).
 #include <filesystem>
+#include <vector>
 
 namespace penumbra {
 
@@ -17,8 +18,11 @@ namespace penumbra {
 void removeStagingOnInterrupt();
 
 // Held by StagedDirectory for its staging directory's lifetime; no-ops when
-// removeStagingOnInterrupt() was never called (tests, libraries).
-void registerStaging(const std::filesystem::path& staging);
+// removeStagingOnInterrupt() was never called (tests, libraries). `createdParents` (outermost
+// first) are the folders the run creates to hold the staging directory: an interrupt removes
+// them too, innermost first, each only if empty, so `-o new/out` stopped leaves no `new/`.
+void registerStaging(const std::filesystem::path& staging,
+                     const std::vector<std::filesystem::path>& createdParents = {});
 void unregisterStaging(const std::filesystem::path& staging);
 
 // While one exists, an interrupt waits (a commit renaming files into place is finished first).

@@ -46,24 +46,28 @@ StagedDirectory::StagedDirectory(const fs::path& target) : target_(normalizedTar
   if (targetExisted_) {
     staging_ = target_ / fmt::format(".penumbra.partial-{}", pid);
   } else {
-    // Remember which ancestors are new, so that a failed run leaves nothing behind.
+    // Remember which ancestors are new, so that a failed or interrupted run leaves nothing
+    // behind.
     std::vector<fs::path> missing;
     for (fs::path a = target_.parent_path(); !fs::exists(a); a = a.parent_path()) {
       missing.push_back(a);
       if (a == a.root_path()) break;
     }
-    for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-      fs::create_directory(*it);
-      createdParents_.push_back(*it);
-    }
+    createdParents_.assign(missing.rbegin(), missing.rend());
     staging_ =
         target_.parent_path() / fmt::format(".{}.partial-{}", target_.filename().string(), pid);
   }
-  registerStaging(staging_);  // before it exists: an interrupt from here on removes it
+  // Before anything is created: an interrupt from here on removes the staging directory and the
+  // parents created for it.
+  registerStaging(staging_, createdParents_);
   try {
+    for (const fs::path& parent : createdParents_) fs::create_directory(parent);
     fs::remove_all(staging_);  // a leftover of a killed run with the same pid
     fs::create_directory(staging_);
   } catch (...) {
+    std::error_code ec;
+    for (auto it = createdParents_.rbegin(); it != createdParents_.rend(); ++it)
+      fs::remove(*it, ec);  // only if empty
     unregisterStaging(staging_);
     throw;
   }
