@@ -2,10 +2,8 @@
 // targets drawn where DF crosses them, the figures read back from a run's files equal to the
 // run's own, and `penumbra grid --plot` on a daylight scene drawing the maps.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <fstream>
 #include <set>
 
@@ -14,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "output/result_reader.hpp"
+#include "penumbra_process.hpp"
 #include "test_files.hpp"
 #include "viz/daylight_map.hpp"
 #include "viz_test_support.hpp"
@@ -24,7 +23,9 @@ namespace {
 namespace fs = std::filesystem;
 using penumbra::testing::Png;
 using penumbra::testing::readText;
+using penumbra::testing::Result;
 using penumbra::testing::roomScene;
+using penumbra::testing::runPenumbra;
 using penumbra::testing::TempDir;
 
 // A 5 × 3 work plane 1 m apart from (0.5, 0.5, 0.8), DF = 1 + 0.75 c % (c the column), E_h
@@ -95,21 +96,14 @@ TEST(DaylightMap, TheTargetsAreDrawnWhereTheFactorCrossesThem) {
   EXPECT_NEAR(figure.eMinAt.x(), 0.5, 1e-12);
 }
 
-int runPenumbra(const fs::path& dir, const std::string& arguments) {
-  const std::string command = "cd '" + dir.string() + "' && '" PENUMBRA_BINARY "' " + arguments +
-                              " > /dev/null 2> stderr.txt < /dev/null";
-  const int raw = std::system(command.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-}
-
 // The office under the overcast sky, direct light only (the quick run): `grid --plot` draws a DF
 // map per planar grid, and the figures read back from the files are those summary.json holds.
 TEST(DaylightMap, GridWithPlotDrawsTheMapsAndReadsTheFiguresBack) {
   TempDir dir("viz-daylight-map");
   const std::string scene = PENUMBRA_SOURCE_DIR "/data/office-daylight.yaml";
-  ASSERT_EQ(
-      runPenumbra(dir.path(), "grid '" + scene + "' -o out --direct-only --plot --width 600 -q"), 0)
-      << readText(dir.path() / "stderr.txt");
+  const Result plotted =
+      runPenumbra(dir.path(), "grid '" + scene + "' -o out --direct-only --plot --width 600 -q");
+  ASSERT_EQ(plotted.status, 0) << plotted.err;
   const fs::path out = dir.path() / "out";
   EXPECT_TRUE(fs::exists(out / "reference-plane-df.png"));
   EXPECT_TRUE(fs::exists(out / "facing-window-df.png"));
