@@ -527,8 +527,10 @@ TEST(SunInGrids, TheDaylightFactorLeavesTheSunOut) {
   EXPECT_GT(with.sun->eMax, 1000.0);
   EXPECT_GT(with.sun->sunlitShare, 0.0);
   EXPECT_LT(with.sun->sunlitShare, 1.0);
-  EXPECT_NEAR(with.metrics.eAvg - without.metrics.eAvg, with.sun->eAvg, 1e-6 * with.metrics.eAvg);
-  // E − E_sun rounds E_sun's part away within 1e-16 of E: the figures agree to 1e-12.
+  // The sun adds its direct light and, reflected by the room, more.
+  EXPECT_GT(with.metrics.eAvg - without.metrics.eAvg, with.sun->eAvg);
+  // The mesh does not follow the sun and the sun's light is solved alone, so E − E_sun −
+  // E_sun,reflected rounds the sun's parts away within 1e-16 of E: the figures agree to 1e-12.
   const DaylightMetrics& a = *without.daylight;
   const DaylightMetrics& b = *with.daylight;
   const std::pair<double, double> figures[] = {
@@ -542,16 +544,17 @@ TEST(SunInGrids, TheDaylightFactorLeavesTheSunOut) {
 
 TEST(SunInGrids, CsvRowsCarryTheSunAndTheDaylightFactorWithoutIt) {
   EXPECT_EQ(gridCsvHeader(true, true, true),
-            "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_sun_lx,DF_pct,DF_direct_pct,"
-            "DF_internal_pct,inside\n");
+            "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_sun_lx,E_sun_reflected_lx,"
+            "DF_pct,DF_direct_pct,DF_internal_pct,inside\n");
   EXPECT_EQ(gridCsvHeader(false, false, true), "x_m,y_m,z_m,nx,ny,nz,E_lx,E_sun_lx,inside\n");
   GridRows rows(NumberDigits::Double);
   rows.setOutdoorIlluminance(10000.0);
   rows.setSunColumn(true);
   const double direct = 1200.0;
-  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), GridRowValues{1250.0, &direct, 1000.0}, "");
-  // E 1250 lx of which 1000 sun, 200 direct from the sky: DF 2.5 %, 2 % direct, 0.5 % internal.
-  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,1250,1200,50,1000,2.5,2,0.5,\n");
+  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), GridRowValues{1300.0, &direct, 1000.0, 50.0}, "");
+  // E 1300 lx: 1200 direct (1000 of it the sun's, 200 the sky's), 100 reflected (50 of it the
+  // sun's): DF (1300 − 1000 − 50) / 100 = 2.5 %, 2 % direct, 0.5 % internal.
+  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,1300,1200,100,1000,50,2.5,2,0.5,\n");
 }
 
 TEST(SunInGrids, ASweepCaseIsComputedAgainWhenTheSunChanges) {
@@ -617,15 +620,16 @@ TEST(SunInGrids, TheTableAndSummaryGiveEsunAndTheSunlitShare) {
 }
 
 TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
-  // `penumbra plot` reads the CSV a sunny run wrote: E, its parts and E_sun come back.
+  // `penumbra plot` reads the CSV a sunny run wrote: E, its parts, E_sun and its reflection come back.
   GridReport written;
   written.name = "plane";
   written.points = {SamplePoint{Vec3(1, 2, 0.85), Vec3::UnitZ(), -1},
                     SamplePoint{Vec3(1.5, 2, 0.85), Vec3::UnitZ(), -1}};
   written.insideSolids = {"", ""};
-  written.illuminance = {1250.0, 300.0};
+  written.illuminance = {1300.0, 300.0};
   written.direct = {1200.0, 200.0};
   written.sun = {1000.0, 0.0};
+  written.sunReflected = {50.0, 0.0};
   written.sunMetrics = SunMetrics{500.0, 1000.0, 0.5};
   written.daylight = DaylightMetrics{};
   written.daylight->outdoorIlluminance = 10000.0;
@@ -636,8 +640,9 @@ TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
   EXPECT_EQ(read.illuminance, written.illuminance);
   EXPECT_EQ(read.direct, written.direct);
   EXPECT_EQ(read.sun, written.sun);
-  // The daylight factor columns after E_sun, of E less the sun: (1250 − 1000) / 100 = 2.5 %
-  // (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
+  EXPECT_EQ(read.sunReflected, written.sunReflected);
+  // The daylight factor columns after the sun's, of E less the sun's light: (1300 − 1000 − 50) /
+  // 100 = 2.5 % (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
   EXPECT_EQ(read.daylightFactor, (std::vector<double>{2.5, 3.0}));
   EXPECT_EQ(read.daylightFactorDirect, (std::vector<double>{2.0, 2.0}));
 }

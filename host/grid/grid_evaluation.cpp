@@ -220,7 +220,7 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   std::vector<SamplePoint> outside;
   std::vector<std::size_t> outsideAt;  // offsets in the chunk
   std::vector<int> inside, onSolid;
-  std::vector<double> e, direct, sun;
+  std::vector<double> e, direct, sun, sunReflected;
   GridMetricsSum directSums;
   SunMetricsSum sunSums;
   std::vector<double> daylightTotal, daylightDirect;  // lx, points not inside solids (a sky)
@@ -252,11 +252,13 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     e.assign(inside.size(), 0.0);
     direct.assign(split ? inside.size() : 0, 0.0);
     sun.assign(scene.sun ? inside.size() : 0, 0.0);
+    sunReflected.assign(scene.sun && split ? inside.size() : 0, 0.0);
     if (!outside.empty()) {
       const PointIlluminance values = estimate(outside);
       if (values.total.size() != outside.size() ||
           (!values.direct.empty() && values.direct.size() != outside.size()) ||
           (!values.sun.empty() && values.sun.size() != outside.size()) ||
+          (!values.sunReflected.empty() && values.sunReflected.size() != outside.size()) ||
           (answered && split == values.direct.empty())) {
         throw std::logic_error("estimator returned the wrong number of values");
       }
@@ -264,26 +266,31 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
         answered = true;
         split = !values.direct.empty();
         direct.assign(split ? inside.size() : 0, 0.0);
+        sunReflected.assign(scene.sun && split ? inside.size() : 0, 0.0);
       }
       for (std::size_t k = 0; k < values.total.size(); ++k) e[outsideAt[k]] = values.total[k];
       for (std::size_t k = 0; k < values.direct.size(); ++k)
         direct[outsideAt[k]] = values.direct[k];
       if (!sun.empty())
         for (std::size_t k = 0; k < values.sun.size(); ++k) sun[outsideAt[k]] = values.sun[k];
+      if (!sunReflected.empty())
+        for (std::size_t k = 0; k < values.sunReflected.size(); ++k)
+          sunReflected[outsideAt[k]] = values.sunReflected[k];
     }
     for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
-    // The daylight factor leaves the sun out.
+    // The daylight factor leaves the sun out, direct and reflected.
     if (scene.sky)
       for (std::size_t k = 0; k < e.size(); ++k) {
         if (inside[k] >= 0) continue;
         const double sunPart = k < sun.size() ? sun[k] : 0.0;
-        daylightTotal.push_back(e[k] - sunPart);
+        const double sunReflectedPart = k < sunReflected.size() ? sunReflected[k] : 0.0;
+        daylightTotal.push_back(e[k] - sunPart - sunReflectedPart);
         daylightDirect.push_back((k < direct.size() ? direct[k] : e[k]) - sunPart);
       }
     for (std::size_t k = 0; k < sun.size(); ++k) sunSums.add(sun[k], inside[k] >= 0);
     for (std::size_t k = 0; k < e.size(); ++k)
       directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
-    if (sink) sink(GridBatch{first, e, direct, sun, inside, onSolid});
+    if (sink) sink(GridBatch{first, e, direct, sun, sunReflected, inside, onSolid});
     if (progress) progress(next, n);
   }
   run.metrics = sums.metrics(grid.spacing);
@@ -316,6 +323,7 @@ GridEvaluation evaluateGrid(const Scene& scene, const CalculationGrid& grid,
       // A batch before the estimator's first answer holds inside points only: direct = total = 0.
       evaluation.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
       if (!batch.sun.empty()) evaluation.sun.push_back(batch.sun[k]);
+      if (!batch.sunReflected.empty()) evaluation.sunReflected.push_back(batch.sunReflected[k]);
     }
   };
   const GridRun run = streamGrid(scene, grid, estimate, batchSize, keep, progress);

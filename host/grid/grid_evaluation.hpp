@@ -74,8 +74,11 @@ struct GridBatch {
   std::span<const double> illuminance;  // lx, total; 0 for points inside solids
   std::span<const double> direct;       // lx, its direct part; empty for a direct-only run
   std::span<const double> sun;          // lx, the direct sunlight in E; empty without a sun
-  std::span<const int> inside;          // index into Scene::solids, -1 for none
-  std::span<const int> onSolid;         // the solid each point lies on, -1 for none
+  // lx, the sun's light reflected by the room, part of E (not of direct); empty without a sun or
+  // for a direct-only run
+  std::span<const double> sunReflected;
+  std::span<const int> inside;   // index into Scene::solids, -1 for none
+  std::span<const int> onSolid;  // the solid each point lies on, -1 for none
 };
 using GridBatchSink = std::function<void(const GridBatch&)>;
 
@@ -85,7 +88,7 @@ struct GridRun {
   std::string name;
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
-  // When the scene has a sky: the daylight factor of E less the sun's part (DF is defined under
+  // When the scene has a sky: the daylight factor of E less the sun's parts (DF is defined under
   // the overcast sky); the EN 17037 verdict only for a grid facing up (a horizontal reference
   // plane).
   std::optional<DaylightMetrics> daylight;
@@ -108,9 +111,10 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
 struct GridEvaluation {
   std::string name;
   GridSamples samples;
-  std::vector<double> illuminance;  // lx, per point, total; 0 for points inside solids
-  std::vector<double> direct;       // lx, its direct part; empty for a direct-only run
-  std::vector<double> sun;          // lx, the direct sunlight in E; empty without a sun
+  std::vector<double> illuminance;   // lx, per point, total; 0 for points inside solids
+  std::vector<double> direct;        // lx, its direct part; empty for a direct-only run
+  std::vector<double> sun;           // lx, the direct sunlight in E; empty without a sun
+  std::vector<double> sunReflected;  // lx, the sun's light reflected by the room, part of E
   GridMetrics metrics;
   std::optional<DaylightMetrics> daylight;  // when the scene has a sky
   std::optional<SunMetrics> sunMetrics;     // when the scene has a sun

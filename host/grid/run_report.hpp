@@ -31,6 +31,7 @@ struct GridReport {
   std::vector<double> illuminance;           // lx, total; 0 inside solids
   std::vector<double> direct;                // lx, its direct part; empty for a direct-only run
   std::vector<double> sun;                   // lx, the direct sunlight in E; empty without a sun
+  std::vector<double> sunReflected;          // lx, the sun's light reflected, in E; empty without
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
   std::optional<DaylightMetrics> daylight;   // when the scene has a sky; excludes the sun

@@ -116,6 +116,9 @@ class KeepingStream : public GridStream {
       report.illuminance.push_back(batch.illuminance[k]);
       // A batch before the estimator's first answer holds inside points only: direct = total = 0.
       report.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
+      if (!batch.sun.empty()) report.sun.push_back(batch.sun[k]);
+      if (!batch.sun.empty())
+        report.sunReflected.push_back(batch.sunReflected.empty() ? 0.0 : batch.sunReflected[k]);
     }
   }
   void finish() override {}
@@ -139,6 +142,10 @@ std::vector<GridReport> evaluateGrids(const Scene& scene,
     reports[g].insideSolids = std::move(keep.kept[g].insideSolids);
     reports[g].illuminance = std::move(keep.kept[g].illuminance);
     if (reports[g].directMetrics) reports[g].direct = std::move(keep.kept[g].direct);
+    if (reports[g].sunMetrics) {
+      reports[g].sun = std::move(keep.kept[g].sun);
+      if (reports[g].directMetrics) reports[g].sunReflected = std::move(keep.kept[g].sunReflected);
+    }
   }
   return reports;
 }

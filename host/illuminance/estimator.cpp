@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -64,8 +65,9 @@ PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
     e.total = evaluateDaylight(*engine_, *scene_, points).illuminance;
     if (interreflection_) {
       e.direct = e.total;
-      const std::vector<double> indirect = interreflection_->indirect(points);
-      for (std::size_t i = 0; i < indirect.size(); ++i) e.total[i] += indirect[i];
+      InterreflectedIlluminance indirect = interreflection_->indirectParts(points);
+      for (std::size_t i = 0; i < indirect.total.size(); ++i) e.total[i] += indirect.total[i];
+      e.sunReflected = std::move(indirect.fromSun);
     }
   }
   if (scene_->sun) {

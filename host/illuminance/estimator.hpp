@@ -1,9 +1,9 @@
 #pragma once
 // The illuminance of a run: the direct part from the exact OpenCL kernel on a device
 // (engine/IlluminanceEngine) or from the host reference, plus the interreflected part
-// (radiosity/Interreflection) unless the run asks for direct light only, plus the direct
-// sunlight of a scene with a sun (sunlight.hpp, on the host in double for either estimator; the
-// sun is not interreflected). `penumbra grid` makes
+// (radiosity/Interreflection, the sun's light included) unless the run asks for direct light
+// only, plus the direct sunlight of a scene with a sun (sunlight.hpp, on the host in double for
+// either estimator). `penumbra grid` makes
 // one per run; `penumbra sweep` keeps one for all its cases (the device and the compiled
 // program stay, only the scene is replaced), so both compute through this class.
 #include <cstddef>
@@ -28,6 +28,9 @@ struct PointIlluminance {
   std::vector<double> total;   // lx
   std::vector<double> direct;  // lx; empty when the total is direct light only
   std::vector<double> sun;     // lx, part of total and of direct; empty without a sun
+  // lx, the sun's light reflected by the room: part of total, not of direct; empty without a
+  // sun or without interreflection
+  std::vector<double> sunReflected;
   PointIlluminance() = default;
   PointIlluminance(std::vector<double> directOnly) : total(std::move(directOnly)) {}  // NOLINT
 };

@@ -54,6 +54,21 @@ bool insideRoom(const Room& room, const Vec3& p, double tolerance) {
   return (p.array() >= -tolerance).all() && (p.array() <= room.size.array() + tolerance).all();
 }
 
+// The glazing's transmittance for a point in an opening's tunnel through the wall (on its reveals,
+// between the outer and the inner rectangle): the sun reaches it through the outer rectangle,
+// where the glazing is. 1 for a point in no tunnel.
+double tunnelTransmittance(const Room& room, const Vec3& p, double tolerance) {
+  for (const Opening& opening : room.openings) {
+    BoundingBox tunnel;
+    for (const Vec3& v : opening.inner.vertices()) tunnel.add(v);
+    for (const Vec3& v : opening.outer.vertices()) tunnel.add(v);
+    if ((p.array() >= tunnel.lo.array() - tolerance).all() &&
+        (p.array() <= tunnel.hi.array() + tolerance).all())
+      return opening.transmittance;
+  }
+  return 1.0;
+}
+
 }  // namespace
 
 ConvexPolygon sunPolygon(const Vec3& point, const Vec3& direction, double distance) {
@@ -109,6 +124,7 @@ std::vector<double> sunlight(const Scene& scene, std::span<const SamplePoint> po
                                                 point, scene, tolerance);
           } else {
             sum = visibleProjectedSolidAngle(disk, point, scene, tolerance);
+            if (scene.room) sum *= tunnelTransmittance(*scene.room, point.position, tolerance);
           }
           e[i] = luminance * sum;
         }

@@ -13,8 +13,10 @@
 // Through a room's openings: a point inside the room (its interior box) sees the sun through one
 // opening or none; the polygon is cut by the planes through P and the edges of each opening's
 // outer rectangle, and each part counts times that opening's transmittance τ (light through
-// glazing counted once, as the sky's). A point outside the room sees the sun past the solids,
-// with no glazing. A sun below the horizon (Sun::aboveHorizon) gives 0.
+// glazing counted once, as the sky's). A point in an opening's tunnel through the wall (on its
+// reveals) sees the sun past the solids, times that opening's τ (the glazing is at the outer
+// rectangle); a point elsewhere outside the room past the solids, with no glazing. A sun below
+// the horizon (Sun::aboveHorizon) gives 0.
 #include <span>
 #include <vector>
 

@@ -47,6 +47,7 @@ void GridFileWriter::write(const GridBatch& batch) {
   next.illuminance.assign(batch.illuminance.begin(), batch.illuminance.end());
   next.direct.assign(batch.direct.begin(), batch.direct.end());
   next.sun.assign(batch.sun.begin(), batch.sun.end());
+  next.sunReflected.assign(batch.sunReflected.begin(), batch.sunReflected.end());
   next.inside.assign(batch.inside.begin(), batch.inside.end());
   lock.unlock();
   changed_.notify_all();
@@ -102,7 +103,8 @@ void GridFileWriter::writeBatch(const Batch& batch) {
         inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view();
     const double direct = batch.direct.empty() ? batch.illuminance[k] : batch.direct[k];
     const GridRowValues values{batch.illuminance[k], withParts_ ? &direct : nullptr,
-                               batch.sun.empty() ? 0.0 : batch.sun[k]};
+                               batch.sun.empty() ? 0.0 : batch.sun[k],
+                               batch.sunReflected.empty() ? 0.0 : batch.sunReflected[k]};
     rows_.add(grid_->position(i), grid_->normal(i), values, insideField);
   }
   csv_.write(rows_.csv().data(), static_cast<std::streamsize>(rows_.csv().size()));

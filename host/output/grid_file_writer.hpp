@@ -50,6 +50,7 @@ class GridFileWriter {
     std::vector<double>
         direct;               // empty: direct = illuminance (a direct-only run, or inside points)
     std::vector<double> sun;  // empty: no sun
+    std::vector<double> sunReflected;  // empty: no sun, a direct-only run or inside points
     std::vector<int> inside;
   };
   void writeBatches();              // the thread

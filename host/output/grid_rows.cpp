@@ -49,18 +49,24 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, const GridRowVal
     *out++ = ',';
   }
   const double sun = sunColumn_ ? values.sun : 0.0;
+  const double sunReflected = sunColumn_ && direct != nullptr ? values.sunReflected : 0.0;
   if (sunColumn_) {
     out = writeNumber(out, sun, illuminanceDigits_);
     *out++ = ',';
+    if (direct != nullptr) {
+      out = writeNumber(out, sunReflected, illuminanceDigits_);
+      *out++ = ',';
+    }
   }
   if (outdoor_ > 0.0) {
     const double toPercent = 100.0 / outdoor_;
-    out = writeNumber(out, toPercent * (illuminance - sun));
+    const double daylight = illuminance - sun - sunReflected;
+    out = writeNumber(out, toPercent * daylight);
     *out++ = ',';
     if (direct != nullptr) {
       out = writeNumber(out, toPercent * (*direct - sun));
       *out++ = ',';
-      out = writeNumber(out, toPercent * (illuminance - sun) - toPercent * (*direct - sun));
+      out = writeNumber(out, toPercent * daylight - toPercent * (*direct - sun));
       *out++ = ',';
     }
   }

@@ -6,9 +6,12 @@
 //                E_indirect_lx = E_lx - E_direct_lx (each rounded to the digits E holds, so the
 //                identity holds to half an ulp of each)
 //                With a sun (illuminance/sunlight.hpp), E_sun_lx follows them: the direct
-//                sunlight, part of E_lx (and of E_direct_lx).
+//                sunlight, part of E_lx (and of E_direct_lx); with interreflection then
+//                E_sun_reflected_lx, the sun's light reflected by the room (part of E_lx and of
+//                E_indirect_lx).
 //                With a sky (scene/daylight.hpp), the daylight factor in % follows the E columns:
-//                DF_pct = 100·(E_lx − E_sun_lx)/E_h, and with interreflection DF_direct_pct (the
+//                DF_pct = 100·(E_lx − E_sun_lx − E_sun_reflected_lx)/E_h, and with
+//                interreflection DF_direct_pct = 100·(E_direct_lx − E_sun_lx)/E_h (the
 //                sky and ground seen through the openings) and DF_internal_pct (interreflected),
 //                which add up to DF_pct; E_h the sky's unobstructed horizontal illuminance. The
 //                daylight factor leaves the sun out: it is defined under the overcast sky
@@ -33,7 +36,7 @@ namespace penumbra {
 inline std::string gridCsvHeader(bool withParts, bool daylight = false, bool sun = false) {
   std::string header = "x_m,y_m,z_m,nx,ny,nz,E_lx";
   if (withParts) header += ",E_direct_lx,E_indirect_lx";
-  if (sun) header += ",E_sun_lx";
+  if (sun) header += withParts ? ",E_sun_lx,E_sun_reflected_lx" : ",E_sun_lx";
   if (daylight) header += withParts ? ",DF_pct,DF_direct_pct,DF_internal_pct" : ",DF_pct";
   return header + ",inside\n";
 }
@@ -43,6 +46,7 @@ struct GridRowValues {
   double illuminance = 0.0;        // lx, total
   const double* direct = nullptr;  // lx, its direct part; null: no E_direct/E_indirect columns
   double sun = 0.0;                // lx, the sunlight in E; written with setSunColumn(true)
+  double sunReflected = 0.0;       // lx, the sun's light reflected, in E; with `direct` and sun
 };
 
 // Rows of both files, appended point by point into two buffers that keep their memory when

@@ -114,7 +114,8 @@ void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits
   rows.setSunColumn(withSun);
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
     const GridRowValues values{grid.illuminance[i], withParts ? &grid.direct[i] : nullptr,
-                               i < grid.sun.size() ? grid.sun[i] : 0.0};
+                               i < grid.sun.size() ? grid.sun[i] : 0.0,
+                               i < grid.sunReflected.size() ? grid.sunReflected[i] : 0.0};
     rows.add(grid.points[i].position, grid.points[i].normal, values,
              csvField(grid.insideSolids[i]));
     if (rows.csv().size() > (1u << 20)) {

@@ -178,10 +178,11 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
     throw std::runtime_error(
         fmt::format("{}:1: expected one of the headers {}", fileName, headers));
   }
-  // x..nz, E (and its two parts), E_sun, DF (and its two parts), inside.
+  // x..nz, E (and its two parts), E_sun (and with the parts its reflection), DF (and its two
+  // parts), inside.
   const std::size_t eFields = layout->withParts ? 3 : 1;
   const std::size_t sunColumn = 6 + eFields;
-  const std::size_t dfColumn = sunColumn + (layout->sun ? 1 : 0);
+  const std::size_t dfColumn = sunColumn + (layout->sun ? (layout->withParts ? 2 : 1) : 0);
   const std::size_t fields = csvFields(layout->header).size();
   for (int lineNumber = 2; std::getline(in, line); ++lineNumber) {
     if (line.empty()) continue;
@@ -199,6 +200,8 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
     grid.illuminance.push_back(parseNumber(f[6], where));
     if (layout->withParts) grid.direct.push_back(parseNumber(f[7], where));
     if (layout->sun) grid.sun.push_back(parseNumber(f[sunColumn], where));
+    if (layout->sun && layout->withParts)
+      grid.sunReflected.push_back(parseNumber(f[sunColumn + 1], where));
     if (layout->daylight) {
       grid.daylightFactor.push_back(parseNumber(f[dfColumn], where));
       if (layout->withParts)

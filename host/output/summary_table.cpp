@@ -203,7 +203,9 @@ std::string summaryTable(const RunReport& report) {
       fmt::format("E: {}{}{}\n",
                   report.interreflection ? "total illuminance (direct + interreflected)"
                                          : "direct illuminance only",
-                  report.sun ? ", with the sun's direct light (the sun is not interreflected)" : "",
+                  !report.sun              ? ""
+                  : report.interreflection ? ", with the sun's light, direct and reflected"
+                                           : ", with the sun's direct light",
                   maintenance.empty() ? "" : ", " + maintenance);
   if (!luminaires.empty()) table += "Luminaires: " + luminaires + "\n";
   table += formatRows(rows);

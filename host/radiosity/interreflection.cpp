@@ -9,10 +9,12 @@
 
 #include <fmt/format.h>
 
-#include "geometry/fnv1a_hash.hpp"
 #include "engine/daylight_evaluation.hpp"
+#include "geometry/fnv1a_hash.hpp"
 #include "geometry/tolerance.hpp"
+#include "illuminance/sunlight.hpp"
 #include "radiosity/element_transfer.hpp"
+#include "radiosity/sun_on_elements.hpp"
 #include "scene/daylight.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -22,11 +24,13 @@ namespace {
 
 // The direct light at every node: E per channel (each source's E split into channels by its
 // colour relative to the colour's luminance, as a source's `color` keeps its photometric
-// luminance; the photometric luminaires white), and E per light group, photometric: each
-// Lambertian source alone, then the luminaires together.
+// luminance; the photometric luminaires white), E per light group, photometric (each Lambertian
+// source alone, then the luminaires together), and the sun's direct light apart: the mesh does
+// not follow the sun, so that a scene's daylight factor is the same with any sun or none.
 struct NodeLight {
   Eigen::MatrixX3d direct;  // lx, [node][channel]
   Eigen::MatrixXd byGroup;  // lx, [node][group]
+  Eigen::VectorXd sun;      // lx, [node], white; empty without a sun
 };
 
 NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh) {
@@ -40,9 +44,15 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
   }
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
   const bool luminaires = !scene.luminaires.empty();
+  const bool sun = scene.sun.has_value();
   NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
-                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires))};
+                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires)),
+                  Eigen::VectorXd::Zero(sun ? n : 0)};
   if (n == 0) return light;
+  if (sun) {
+    const std::vector<double> e = sunlight(scene, mesh.nodes);
+    light.sun = Eigen::Map<const Eigen::VectorXd>(e.data(), n);
+  }
   const IlluminanceResult result = evaluateDaylight(engine, scene, mesh.nodes, true);
   for (Eigen::Index node = 0; node < n; ++node) {
     for (std::size_t s = 0; s < sources; ++s) {
@@ -110,6 +120,13 @@ std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixXd&
   return split;
 }
 
+// The photometric value of each row's channels.
+Eigen::VectorXd photometricRows(const Eigen::MatrixX3d& rgb) {
+  Eigen::VectorXd values(rgb.rows());
+  for (Eigen::Index i = 0; i < values.size(); ++i) values[i] = photometric(rgb.row(i).transpose());
+  return values;
+}
+
 // The elements as unit sources, the kernel for them, and the transfer between them.
 std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const Scene& scene,
                                                   const SurfaceMesh& mesh,
@@ -160,7 +177,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_);
   }
-  finishMesh(light.direct, mesh.elementSize, start);
+  finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
 
   if (mesh_.elements.empty()) return;
   const std::uint64_t key = transferFingerprint(scene, mesh_);
@@ -175,10 +192,17 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   start = Clock::now();
   solution_ = solveRadiosity(geometry_->transfer, mesh_, direct_);
   report_.residual = solution_.residual;
+  if (sunDirect_.size() > 0) {
+    // The system is linear: the sun's part is solved alone and added, so that the daylight
+    // factor can leave it out.
+    const RadiositySolution sun =
+        solveRadiosity(geometry_->transfer, mesh_, sunDirect_.replicate<1, 3>());
+    report_.residual = std::max(report_.residual, sun.residual);
+    addSun(sun.luminance);
+  }
+  luminance_ = photometricRows(solution_.luminance);
+  if (sunLuminance_.size() > 0) luminance_ += sunLuminance_;
   report_.solveSeconds = secondsSince(start);
-  luminance_.resize(solution_.luminance.rows());
-  for (Eigen::Index i = 0; i < luminance_.size(); ++i)
-    luminance_[i] = photometric(solution_.luminance.row(i).transpose());
 }
 
 void Interreflection::solveHierarchically(compute::Device& device, const Scene& scene,
@@ -204,7 +228,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
     mesh_ = tree->leafMesh(mesh.quadratureOrder);
     light = nodeLight(direct, scene, mesh_);
   }
-  finishMesh(light.direct, mesh.elementSize, start);
+  finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
   if (mesh_.elements.empty()) return;
 
   Fnv1a salt;
@@ -234,21 +258,32 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
   solution_.luminance = solved.luminance;
   solution_.residual = solved.residual;
   report_.residual = solved.residual;
+  if (sunDirect_.size() > 0) {
+    const HierarchicalSolution sun =
+        solveHierarchical(*geometry_->links, sunDirect_.replicate<1, 3>());
+    report_.residual = std::max(report_.residual, sun.residual);
+    addSun(sun.luminance);
+  }
+  luminance_ = photometricRows(solution_.luminance);
+  if (sunLuminance_.size() > 0) luminance_ += sunLuminance_;
   report_.solveSeconds = secondsSince(start);
-  luminance_.resize(solution_.luminance.rows());
-  for (Eigen::Index i = 0; i < luminance_.size(); ++i)
-    luminance_[i] = photometric(solution_.luminance.row(i).transpose());
 }
 
-void Interreflection::finishMesh(const Eigen::MatrixX3d& nodeDirect, double elementSize,
+void Interreflection::finishMesh(const Scene& scene, const Eigen::MatrixX3d& nodeDirect,
+                                 const Eigen::VectorXd& nodeSun, double elementSize,
                                  Clock::time_point start) {
   direct_ = elementAverage(mesh_, nodeDirect);
+  sunDirect_ = nodeSun.size() > 0 ? sunElementAverage(scene, mesh_, nodeSun) : Eigen::VectorXd();
   report_.elements = mesh_.elements.size();
   report_.elementSize = elementSize;
   report_.nodes = mesh_.nodes.size();
   report_.surfaceArea = mesh_.area();
   report_.blackSolids = mesh_.blackSolids;
   report_.meshSeconds = secondsSince(start);
+}
+
+void Interreflection::addSun(const Eigen::MatrixX3d& luminance) {
+  sunLuminance_ = photometricRows(luminance);
 }
 
 Interreflection::~Interreflection() = default;
@@ -285,6 +320,20 @@ Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
 std::vector<double> Interreflection::indirect(std::span<const SamplePoint> points) {
   const Eigen::MatrixXd e = gather(points, luminance_);
   return std::vector<double>(e.data(), e.data() + e.size());
+}
+
+InterreflectedIlluminance Interreflection::indirectParts(std::span<const SamplePoint> points) {
+  InterreflectedIlluminance parts;
+  if (sunLuminance_.size() == 0) {
+    parts.total = indirect(points);
+    return parts;
+  }
+  Eigen::MatrixXd luminance(luminance_.size(), 2);
+  luminance << luminance_, sunLuminance_;
+  const Eigen::MatrixXd e = gather(points, luminance);
+  parts.total.assign(e.col(0).data(), e.col(0).data() + e.rows());
+  parts.fromSun.assign(e.col(1).data(), e.col(1).data() + e.rows());
+  return parts;
 }
 
 std::vector<Eigen::Vector3d> Interreflection::indirectChannels(

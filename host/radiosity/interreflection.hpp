@@ -4,7 +4,11 @@
 // occluded contour integral averaged over each receiving element (element_transfer), the
 // radiosity equations are solved per RGB channel (radiosity_solver), and the indirect E at any
 // point is the kernel's exact integral over every element at its solved luminance (the final
-// gather: no interpolation between points).
+// gather: no interpolation between points). The sun's direct light on the elements
+// (illuminance/sunlight.hpp) is a right-hand side of its own, solved alone and added, so that
+// its part of the indirect E is known (the daylight factor leaves it out); the mesh follows the
+// other light only, so a scene's daylight factor does not depend on its sun. A scene lit by the
+// sun alone (no sky, no sources) has no mesh and its sunlight is not interreflected.
 #include <memory>
 #include <span>
 #include <string>
@@ -36,6 +40,12 @@ struct InterreflectionReport {
   std::vector<std::string> blackSolids;  // reached by light, no material: black
 };
 
+// Interreflected E at points, and the part of it that comes from the sun.
+struct InterreflectedIlluminance {
+  std::vector<double> total;    // lx
+  std::vector<double> fromSun;  // lx, part of total; empty without a sun
+};
+
 class Interreflection {
  public:
   // Solves the radiosity equations for `scene` (which must outlive this object). `direct`
@@ -47,16 +57,24 @@ class Interreflection {
                   TransferCache* cache = nullptr);
   ~Interreflection();
 
-  // Interreflected E in lx at each point (the photometric sum of the channels).
+  // Interreflected E in lx at each point (the photometric sum of the channels), the sun's
+  // included.
   std::vector<double> indirect(std::span<const SamplePoint> points);
+  // The same with the sun's part, from one gather (the sun's light reflected by the room, solved
+  // alone since the system is linear; the daylight factor leaves it out).
+  InterreflectedIlluminance indirectParts(std::span<const SamplePoint> points);
   // Interreflected E per RGB channel at each point (lx; L = ρ_c·E_c/π as for a source's
   // colour), from the same gather: each element's part weighted by its solved luminance in that
-  // channel. The photometric sum of the channels is indirect() to double rounding.
+  // channel. The sun's part is left out (renders do not draw the sun yet); without a sun the
+  // photometric sum of the channels is indirect() to double rounding.
   std::vector<Eigen::Vector3d> indirectChannels(std::span<const SamplePoint> points);
 
   const SurfaceMesh& mesh() const { return mesh_; }
+  // The solution for every light but the sun.
   const RadiositySolution& solution() const { return solution_; }
-  // Element-average direct E per channel, lx.
+  // lx, the element-average direct sunlight; empty without a sun.
+  const Eigen::VectorXd& sunDirect() const { return sunDirect_; }
+  // Element-average direct E per channel, lx, the sun's left out.
   const Eigen::MatrixX3d& direct() const { return direct_; }
   const InterreflectionReport& report() const { return report_; }
 
@@ -65,7 +83,10 @@ class Interreflection {
   // element j at 1 cd/m²: points × columns, lx.
   Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
   // The element-average direct light and the mesh's part of the report, once the mesh is final.
-  void finishMesh(const Eigen::MatrixX3d& nodeDirect, double elementSize, Clock::time_point start);
+  void finishMesh(const Scene& scene, const Eigen::MatrixX3d& nodeDirect,
+                  const Eigen::VectorXd& nodeSun, double elementSize, Clock::time_point start);
+  // Keeps the photometric luminance of the sun's solution (solved alone).
+  void addSun(const Eigen::MatrixX3d& luminance);
   // The constructor's work with hierarchical links (MeshOptions::linkError > 0).
   void solveHierarchically(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
                            const MeshOptions& mesh, const EngineOptions& engine,
@@ -74,6 +95,8 @@ class Interreflection {
   SurfaceMesh mesh_;
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
+  Eigen::VectorXd sunLuminance_;                // the sun's part of it; empty without a sun
+  Eigen::VectorXd sunDirect_;                   // lx, element-average direct sunlight; empty
   Eigen::MatrixX3d direct_;
   RadiositySolution solution_;
   InterreflectionReport report_;
