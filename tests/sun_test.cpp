@@ -620,7 +620,8 @@ TEST(SunInGrids, TheTableAndSummaryGiveEsunAndTheSunlitShare) {
 }
 
 TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
-  // `penumbra plot` reads the CSV a sunny run wrote: E, its parts, E_sun and its reflection come back.
+  // `penumbra plot` reads the CSV a sunny run wrote: E, its parts, E_sun and its reflection come
+  // back.
   GridReport written;
   written.name = "plane";
   written.points = {SamplePoint{Vec3(1, 2, 0.85), Vec3::UnitZ(), -1},
