@@ -13,11 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "illuminance/estimator.hpp"
 #include "illuminance/far_polygon.hpp"
 #include "illuminance/patch_sky.hpp"
 #include "illuminance/skylight.hpp"
 #include "radiosity/element_quadrature.hpp"
 #include "scene/cie_general_sky.hpp"
+#include "scene/daylight.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_errors.hpp"
 
@@ -263,6 +265,28 @@ TEST(PatchSky, CieGeneralSkiesAgainstTheirContinuousDistribution) {
       EXPECT_LT(worst, previous) << type << ", " << m;
       previous = worst;
     }
+  }
+}
+
+// A run's E (the Estimator, kernel and host together) under a `cie-general` sky is the host's
+// patch sky alone: the kernel gets no sky sources of its own, the sky is added once.
+TEST(PatchSky, ARunTakesTheSkyOnceFromThePatches) {
+  const Scene scene =
+      parseScene(windowYaml("sky: {model: cie-general, type: 3, horizontal_illuminance_lx: 10000, "
+                            "ground_reflectance: 0.2}\n"),
+                 "general.yaml");
+  ASSERT_TRUE(skyOnHost(scene));
+  EXPECT_EQ(daylightScene(scene, 1.0).sources.size(), scene.sources.size());
+  const std::vector<SamplePoint> points = windowPoints();
+  EstimatorOptions options;
+  options.device = "cpu";
+  options.interreflection = false;
+  Estimator estimator(options, scene);
+  const std::vector<double> run = estimator.illuminance(points).total;
+  const std::vector<double> host = skylight(scene, points);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    ASSERT_GT(host[i], 0.0);
+    EXPECT_NEAR(run[i], host[i], 1e-12 * host[i]) << points[i].position.transpose();
   }
 }
 
