@@ -37,8 +37,8 @@ double patchIlluminance(const SkyContext& context, const ConvexPolygon& hole,
   return e;
 }
 
-// E from the sky part `skyPart` (directions above P's horizon) at luminance 1 per cd/m² of the
-// sky's scale, times that scale (cd/m²).
+// E from the uniform or overcast sky over `skyPart` (a far polygon above P's horizon): the
+// luminance polynomial's moments over the part P sees, times L_z.
 double skyIlluminance(const SkyContext& context, const ConvexPolygon& skyPart,
                       const SamplePoint& point) {
   const Sky& sky = context.sky;

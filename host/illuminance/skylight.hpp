@@ -17,8 +17,9 @@
 // the distance of Q, only on its directions, so this is the kernel's result for a scene without
 // obstructions, and the exact one with them. A `cie-general` sky is a sky of patches
 // (patch_sky.hpp): each piece of a patch, placed beyond every solid and cut to the directions
-// through O (far_polygon.hpp, throughHole), gives L_patch M_0 over the part P sees. The obstructions are black to the sky: the light
-// they reflect (the externally reflected component) is not counted.
+// through O (far_polygon.hpp, throughHole), gives L_patch M_0 over the part P sees. The
+// obstructions are black to the sky: the light they reflect (the externally reflected
+// component) is not counted.
 #include <optional>
 #include <span>
 #include <vector>
