@@ -1,15 +1,20 @@
 #pragma once
 // An independent reference for interreflection, written apart from host/radiosity: an empty box
 // room [0, X] × [0, Y] × [0, Z] of one reflectance, lit by one downward rectangle just below the
-// ceiling, solved by piecewise-constant collocation in double. Every face sees every other face
-// whole, so the transfer from a patch to a point is Lambert's contour integral of the patch with
-// no occlusion; each face is cut into n × n patches and the equations are met at the patch
-// centres. The error falls as n grows; tests compare at several n.
+// ceiling or by any light from outside given as E at a point (BoxRoomLighting: daylight through
+// a window, with the window a hole in its wall), solved by piecewise-constant collocation in
+// double. Every face sees every other face whole, so the transfer from a patch to a point is
+// Lambert's contour integral of the patch with no occlusion; each face is cut into n × n patches
+// and the equations are met at the patch centres. The error falls as n grows; tests compare at
+// several n and extrapolate (collocationLimit).
 #include <Eigen/Dense>
 
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <functional>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace penumbra::testing {
@@ -39,6 +44,14 @@ struct BoxRoomCase {
   double luminance = 1000.0;  // cd/m²
 };
 
+// Light that enters the room from outside, and where it enters.
+struct BoxRoomLighting {
+  std::function<double(const V3& point, const V3& normal)> direct;  // E (lx) before reflection
+  // Holes in the wall y = 0, each [x0, x1] × [z0, z1] (m): the patches whose centre lies in one are
+  // left out (they neither receive nor reflect). Their edges must fall on the patch grid.
+  std::vector<std::array<double, 4>> wallHoles;
+};
+
 struct BoxRoomPatch {
   std::vector<V3> corners;
   V3 centre, normal;
@@ -46,7 +59,15 @@ struct BoxRoomPatch {
 
 class BoxRoomReference {
  public:
-  BoxRoomReference(const BoxRoomCase& room, int n) : room_(room) {
+  BoxRoomReference(const BoxRoomCase& room, int n)
+      : BoxRoomReference(room, n,
+                         BoxRoomLighting{[room](const V3& p, const V3& normal) {
+                                           return panelIlluminance(room, p, normal);
+                                         },
+                                         {}}) {}
+
+  BoxRoomReference(const BoxRoomCase& room, int n, BoxRoomLighting lighting)
+      : lighting_(std::move(lighting)) {
     const V3& s = room.size;
     // The six faces: origin, two edge vectors, inward normal.
     const std::array<std::array<V3, 4>, 6> faces{{
@@ -62,14 +83,15 @@ class BoxRoomReference {
         for (int j = 0; j < n; ++j) {
           const V3 a = f[0] + f[1] * i / n + f[2] * j / n;
           const V3 du = f[1] / n, dv = f[2] / n;
-          patches_.push_back({{a, a + du, a + du + dv, a + dv}, a + 0.5 * (du + dv), f[3]});
+          const BoxRoomPatch patch{{a, a + du, a + du + dv, a + dv}, a + 0.5 * (du + dv), f[3]};
+          if (!inHole(patch)) patches_.push_back(patch);
         }
     }
     const auto count = static_cast<Eigen::Index>(patches_.size());
     Eigen::VectorXd direct(count);
     Eigen::MatrixXd g(count, count);
     for (Eigen::Index i = 0; i < count; ++i) {
-      direct[i] = directIlluminance(patches_[i].centre, patches_[i].normal);
+      direct[i] = lighting_.direct(patches_[i].centre, patches_[i].normal);
       for (Eigen::Index j = 0; j < count; ++j)
         g(i, j) =
             i == j || patches_[i].normal == patches_[j].normal
@@ -83,16 +105,17 @@ class BoxRoomReference {
     luminance_ = k * (direct + indirect);
   }
 
-  double directIlluminance(const V3& p, const V3& normal) const {
-    if (p.z() >= room_.z) return 0.0;
-    const std::vector<V3> source{V3(room_.x0, room_.y0, room_.z), V3(room_.x1, room_.y0, room_.z),
-                                 V3(room_.x1, room_.y1, room_.z), V3(room_.x0, room_.y1, room_.z)};
-    return room_.luminance * polygonIlluminance(p, normal, source);
+  // E (lx) at p from the case's panel.
+  static double panelIlluminance(const BoxRoomCase& room, const V3& p, const V3& normal) {
+    if (p.z() >= room.z) return 0.0;
+    const std::vector<V3> source{V3(room.x0, room.y0, room.z), V3(room.x1, room.y0, room.z),
+                                 V3(room.x1, room.y1, room.z), V3(room.x0, room.y1, room.z)};
+    return room.luminance * polygonIlluminance(p, normal, source);
   }
 
   // Total E at a point inside the room facing `normal` (not on a face).
   double totalIlluminance(const V3& p, const V3& normal) const {
-    double e = directIlluminance(p, normal);
+    double e = lighting_.direct(p, normal);
     for (std::size_t j = 0; j < patches_.size(); ++j) {
       // Only the part of a patch above p's horizon counts; work-plane points facing up see the
       // walls' lower parts edge on, so each patch is clipped at the horizon plane.
@@ -116,9 +139,32 @@ class BoxRoomReference {
     return polygonIlluminance(p, normal, kept);
   }
 
-  BoxRoomCase room_;
+  bool inHole(const BoxRoomPatch& patch) const {
+    const V3& c = patch.centre;
+    if (c.y() != 0.0) return false;
+    for (const auto& [x0, x1, z0, z1] : lighting_.wallHoles)
+      if (c.x() > x0 && c.x() < x1 && c.z() > z0 && c.z() < z1) return true;
+    return false;
+  }
+
+  BoxRoomLighting lighting_;
   std::vector<BoxRoomPatch> patches_;
   Eigen::VectorXd luminance_;
 };
+
+// The limit of values taken at n, 1.5n and 2n patches a face, for a collocation error falling like
+// n^-p: d2/d1 = (1.5^-p - 2^-p) / (1 - 1.5^-p) fixes p (bisected in [0.5, 4]), and the error left
+// at 2n is d2·2^-p/(1.5^-p - 2^-p).
+inline double collocationLimit(double atN, double at1_5N, double at2N) {
+  const double d1 = atN - at1_5N, d2 = at1_5N - at2N;
+  double lo = 0.5, hi = 4.0;
+  for (int it = 0; it < 60; ++it) {
+    const double p = 0.5 * (lo + hi);
+    const double ratio = (std::pow(1.5, -p) - std::pow(2.0, -p)) / (1.0 - std::pow(1.5, -p));
+    (ratio > d2 / d1 ? lo : hi) = p;
+  }
+  const double p = 0.5 * (lo + hi);
+  return at2N - d2 * std::pow(2.0, -p) / (std::pow(1.5, -p) - std::pow(2.0, -p));
+}
 
 }  // namespace penumbra::testing

@@ -171,19 +171,8 @@ TEST(Interreflection, BoxRoomAgainstCollocation) {
       byN.back().push_back(reference.totalIlluminance(p.position, p.normal));
   }
   std::vector<double> limit;
-  for (std::size_t k = 0; k < points.size(); ++k) {
-    const double d1 = byN[0][k] - byN[1][k], d2 = byN[1][k] - byN[2][k];
-    // d2/d1 = (1.5^-p - 2^-p) / (1 - 1.5^-p) fixes p; the remaining error is d2·2^-p/(1.5^-p -
-    // 2^-p).
-    double lo = 0.5, hi = 4.0;
-    for (int it = 0; it < 60; ++it) {
-      const double p = 0.5 * (lo + hi);
-      const double ratio = (std::pow(1.5, -p) - std::pow(2.0, -p)) / (1.0 - std::pow(1.5, -p));
-      (ratio > d2 / d1 ? lo : hi) = p;
-    }
-    const double p = 0.5 * (lo + hi);
-    limit.push_back(byN[2][k] - d2 * std::pow(2.0, -p) / (std::pow(1.5, -p) - std::pow(2.0, -p)));
-  }
+  for (std::size_t k = 0; k < points.size(); ++k)
+    limit.push_back(collocationLimit(byN[0][k], byN[1][k], byN[2][k]));
 
   IlluminanceEngine direct(cpuDevice(), scene);
   const std::vector<double> e0 = direct.illuminance(points);
