@@ -17,15 +17,17 @@
 #include "illuminance/far_polygon.hpp"
 #include "illuminance/patch_sky.hpp"
 #include "illuminance/skylight.hpp"
-#include "radiosity/element_quadrature.hpp"
 #include "scene/cie_general_sky.hpp"
 #include "scene/daylight.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_errors.hpp"
+#include "window_sky_quadrature.hpp"
 
 namespace penumbra {
 namespace {
 
+using testing::gaussLegendreOn;
+using testing::IntervalRule;
 using testing::sceneErrorOf;
 
 constexpr double kPi = std::numbers::pi;
@@ -175,24 +177,11 @@ TEST(PatchSky, SubdivisionErrorAgainstTheExactOvercastSkyFallsWithFinerPatches) 
   }
 }
 
-// Gauss–Legendre nodes and weights on [a, b].
-struct Rule {
-  std::vector<double> x, w;
-};
-Rule gaussRule(int n, double a, double b) {
-  const GaussRule unit = gaussLegendre01(n);
-  Rule r;
-  for (std::size_t k = 0; k < unit.nodes.size(); ++k) {
-    r.x.push_back(a + (b - a) * unit.nodes[k]);
-    r.w.push_back((b - a) * unit.weights[k]);
-  }
-  return r;
-}
-
 // ∫ L(ω) cos θ dω over the upper hemisphere for L = relative(ω), in (altitude, azimuth) with
 // 64 × 256 Gauss–Legendre points on [0, π/2] × [0, 2π).
 double quadratureHorizontal(const std::function<double(const Vec3&)>& relative) {
-  const Rule alt = gaussRule(64, 0.0, kPi / 2.0), az = gaussRule(256, 0.0, 2.0 * kPi);
+  const IntervalRule alt = gaussLegendreOn(64, 0.0, kPi / 2.0),
+                     az = gaussLegendreOn(256, 0.0, 2.0 * kPi);
   double e = 0.0;
   for (std::size_t i = 0; i < alt.x.size(); ++i)
     for (std::size_t j = 0; j < az.x.size(); ++j) {
@@ -215,7 +204,7 @@ double quadratureWindow(const std::function<double(const Vec3&)>& luminance,
   const double z0 = std::max({0.9, p.z() + (0.9 - p.z()) * k, p.z()});
   const double z1 = std::min(2.4, p.z() + (2.4 - p.z()) * k);
   if (x1 <= x0 || z1 <= z0) return 0.0;
-  const Rule u = gaussRule(96, x0, x1), v = gaussRule(96, z0, z1);
+  const IntervalRule u = gaussLegendreOn(96, x0, x1), v = gaussLegendreOn(96, z0, z1);
   double e = 0.0;
   for (std::size_t i = 0; i < u.x.size(); ++i)
     for (std::size_t j = 0; j < v.x.size(); ++j) {

@@ -19,15 +19,17 @@
 #include "illuminance/estimator.hpp"
 #include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
-#include "radiosity/element_quadrature.hpp"
 #include "scene/daylight.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_device.hpp"
+#include "window_sky_quadrature.hpp"
 
 namespace penumbra {
 namespace {
 
 using testing::cpuDevice;
+using testing::gaussLegendreOn;
+using testing::IntervalRule;
 
 // The window: wall y0 (the room side y = 0, the outside y = −kWall), x 2..4 m, z 0.9..2.4 m.
 constexpr double kX0 = 2.0, kX1 = 4.0, kZ0 = 0.9, kZ1 = 2.4, kWall = 0.2;
@@ -85,20 +87,6 @@ std::string obstructedYaml(const std::string& model, double groundReflectance,
   return yaml;
 }
 
-// Gauss–Legendre nodes and weights on [a, b].
-struct Rule {
-  std::vector<double> x, w;
-};
-Rule gaussRule(int n, double a, double b) {
-  const GaussRule unit = gaussLegendre01(n);
-  Rule r;
-  for (std::size_t k = 0; k < unit.nodes.size(); ++k) {
-    r.x.push_back(a + (b - a) * unit.nodes[k]);
-    r.w.push_back((b - a) * unit.weights[k]);
-  }
-  return r;
-}
-
 // Where the line of the boxes' edges parallel to x (at depth y, height z) lands on the window's
 // outer plane seen from p: a height; and the edges parallel to z (at x, y): an abscissa.
 double heightOnWindow(const Vec3& p, double y, double z) {
@@ -146,7 +134,8 @@ double quadratureE(const Sky& sky, const SamplePoint& point, const std::vector<B
   double e = 0.0;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i)
     for (std::size_t j = 0; j + 1 < zs.size(); ++j) {
-      const Rule u = gaussRule(48, xs[i], xs[i + 1]), v = gaussRule(48, zs[j], zs[j + 1]);
+      const IntervalRule u = gaussLegendreOn(48, xs[i], xs[i + 1]),
+                         v = gaussLegendreOn(48, zs[j], zs[j + 1]);
       for (std::size_t a = 0; a < u.x.size(); ++a)
         for (std::size_t b = 0; b < v.x.size(); ++b) {
           const Vec3 d = Vec3(u.x[a], -kWall, v.x[b]) - p;
