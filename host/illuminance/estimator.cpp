@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "engine/daylight_evaluation.hpp"
+#include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
 #include "reference/reference_illuminance.hpp"
 #include "scene/daylight.hpp"
@@ -42,8 +43,13 @@ Estimator::Estimator(const EstimatorOptions& options, const Scene& scene) : scen
 void Estimator::solveInterreflection() {
   interreflection_.reset();
   if (withInterreflection_) {
-    interreflection_ = std::make_unique<Interreflection>(*clDevice_, *scene_, *engine_, mesh_,
-                                                         EngineOptions{culling_}, &transferCache_);
+    HostDirectLight hostSky;
+    if (skyOnHost(*scene_)) {
+      const Scene* scene = scene_;
+      hostSky = [scene](std::span<const SamplePoint> points) { return skylight(*scene, points); };
+    }
+    interreflection_ = std::make_unique<Interreflection>(
+        *clDevice_, *scene_, *engine_, mesh_, EngineOptions{culling_}, &transferCache_, hostSky);
   }
 }
 
@@ -59,16 +65,17 @@ void Estimator::setScene(const Scene& scene) {
 
 PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
   PointIlluminance e;
-  if (!engine_) {
-    e.total = daylightReference(*scene_, points);
-  } else {
-    e.total = evaluateDaylight(*engine_, *scene_, points).illuminance;
-    if (interreflection_) {
-      e.direct = e.total;
-      InterreflectedIlluminance indirect = interreflection_->indirectParts(points);
-      for (std::size_t i = 0; i < indirect.total.size(); ++i) e.total[i] += indirect.total[i];
-      e.sunReflected = std::move(indirect.fromSun);
-    }
+  e.total = engine_ ? evaluateDaylight(*engine_, *scene_, points).illuminance
+                    : daylightReference(*scene_, points);
+  if (skyOnHost(*scene_)) {  // the sky past obstructions outside the room, on the host
+    const std::vector<double> sky = skylight(*scene_, points);
+    for (std::size_t i = 0; i < sky.size(); ++i) e.total[i] += sky[i];
+  }
+  if (interreflection_) {
+    e.direct = e.total;
+    InterreflectedIlluminance indirect = interreflection_->indirectParts(points);
+    for (std::size_t i = 0; i < indirect.total.size(); ++i) e.total[i] += indirect.total[i];
+    e.sunReflected = std::move(indirect.fromSun);
   }
   if (scene_->sun) {
     e.sun = sunlight(*scene_, points);

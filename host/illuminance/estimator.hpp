@@ -3,7 +3,8 @@
 // (engine/IlluminanceEngine) or from the host reference, plus the interreflected part
 // (radiosity/Interreflection, the sun's light included) unless the run asks for direct light
 // only, plus the direct sunlight of a scene with a sun (sunlight.hpp, on the host in double for
-// either estimator). `penumbra grid` makes
+// either estimator). A sky with obstructions outside the room is computed on the host too
+// (skylight.hpp, for either estimator), and interreflected. `penumbra grid` makes
 // one per run; `penumbra sweep` keeps one for all its cases (the device and the compiled
 // program stay, only the scene is replaced), so both compute through this class.
 #include <cstddef>

@@ -33,7 +33,8 @@ struct NodeLight {
   Eigen::VectorXd sun;      // lx, [node], white; empty without a sun
 };
 
-NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh) {
+NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh,
+                    const HostDirectLight& hostDirect) {
   // The sources as the engine reports them: the scene's, then its sky's and ground's (white).
   const std::vector<Source> all = daylightScene(scene, 0.0).sources;
   const std::size_t sources = all.size();
@@ -45,8 +46,9 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
   const bool luminaires = !scene.luminaires.empty();
   const bool sun = scene.sun.has_value();
+  const bool host = static_cast<bool>(hostDirect);
   NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
-                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires)),
+                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires + host)),
                   Eigen::VectorXd::Zero(sun ? n : 0)};
   if (n == 0) return light;
   if (sun) {
@@ -64,6 +66,14 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
       const double e = result.luminaires[static_cast<std::size_t>(node)];
       light.direct.row(node).array() += e;
       light.byGroup(node, static_cast<Eigen::Index>(sources)) = e;
+    }
+  }
+  if (host) {  // white, one more group after the luminaires
+    const std::vector<double> e = hostDirect(mesh.nodes);
+    const auto group = static_cast<Eigen::Index>(sources + luminaires);
+    for (Eigen::Index node = 0; node < n; ++node) {
+      light.direct.row(node).array() += e[static_cast<std::size_t>(node)];
+      light.byGroup(node, group) = e[static_cast<std::size_t>(node)];
     }
   }
   return light;
@@ -144,18 +154,18 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
 
 Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                  IlluminanceEngine& direct, const MeshOptions& mesh,
-                                 const EngineOptions& engine, TransferCache* cache) {
+                                 const EngineOptions& engine, TransferCache* cache,
+                                 const HostDirectLight& hostDirect) {
   if (mesh.linkError > 0.0) {
-    solveHierarchically(device, scene, direct, mesh, engine, cache);
+    solveHierarchically(device, scene, direct, mesh, engine, cache, hostDirect);
     return;
   }
   auto start = Clock::now();
   // The mesh, refined where the direct light is uneven; the direct E at its nodes comes with it.
   // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
   // the sky face, cut below the scene).
-  mesh_ =
-      buildSurfaceMesh(scene.sky ? daylightScene(scene, scene.bounds().lo.z() - 1.0) : scene, mesh);
-  NodeLight light = nodeLight(direct, scene, mesh_);
+  mesh_ = buildSurfaceMesh(skyFacesScene(scene), mesh);
+  NodeLight light = nodeLight(direct, scene, mesh_, hostDirect);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   if (mesh_.elements.size() > mesh.maxElements) {
     // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
@@ -175,7 +185,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                                    mesh.maxElements, report_.refinementCapped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
-    light = nodeLight(direct, scene, mesh_);
+    light = nodeLight(direct, scene, mesh_, hostDirect);
   }
   finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
 
@@ -207,16 +217,17 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
 
 void Interreflection::solveHierarchically(compute::Device& device, const Scene& scene,
                                           IlluminanceEngine& direct, const MeshOptions& mesh,
-                                          const EngineOptions& engine, TransferCache* cache) {
+                                          const EngineOptions& engine, TransferCache* cache,
+                                          const HostDirectLight& hostDirect) {
   auto start = Clock::now();
   // The element trees, their leaves refined where the direct light is uneven, as the dense
   // path refines its elements; no element limit (the links grow about linearly).
   // With a sky, the faces that see an opening are reached (as buildSurfaceMesh's are above).
-  auto tree = std::make_unique<ElementTree>(buildElementTree(
-      scene.sky ? daylightScene(scene, scene.bounds().lo.z() - 1.0) : scene, mesh.elementSize));
+  auto tree =
+      std::make_unique<ElementTree>(buildElementTree(skyFacesScene(scene), mesh.elementSize));
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   mesh_ = tree->leafMesh(mesh.quadratureOrder);
-  NodeLight light = nodeLight(direct, scene, mesh_);
+  NodeLight light = nodeLight(direct, scene, mesh_, hostDirect);
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     bool capped = false;
     const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
@@ -226,7 +237,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
       if (split[i]) tree->split(tree->leaves[i], tolerance);
     tree->numberLeaves();
     mesh_ = tree->leafMesh(mesh.quadratureOrder);
-    light = nodeLight(direct, scene, mesh_);
+    light = nodeLight(direct, scene, mesh_, hostDirect);
   }
   finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
   if (mesh_.elements.empty()) return;

@@ -9,6 +9,7 @@
 // its part of the indirect E is known (the daylight factor leaves it out); the mesh follows the
 // other light only, so a scene's daylight factor does not depend on its sun. A scene lit by the
 // sun alone (no sky, no sources) has no mesh and its sunlight is not interreflected.
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -46,15 +47,20 @@ struct InterreflectedIlluminance {
   std::vector<double> fromSun;  // lx, part of total; empty without a sun
 };
 
+// Direct light computed outside the engine: E (lx) at each point.
+using HostDirectLight = std::function<std::vector<double>(std::span<const SamplePoint>)>;
+
 class Interreflection {
  public:
   // Solves the radiosity equations for `scene` (which must outlive this object). `direct`
   // answers for `scene` (its direct illuminance); its device runs the element kernels too.
   // `engine` are the options of the element kernels (the transfer and the gather). With a
   // `cache`, the transfer of a geometry met before is taken from it, a new one is put in it.
+  // `hostDirect`, when given, is more direct light (white, lx at each point) that the engine
+  // does not hold: the sky the host computes past obstructions (illuminance/skylight.hpp).
   Interreflection(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
                   const MeshOptions& mesh = {}, const EngineOptions& engine = {},
-                  TransferCache* cache = nullptr);
+                  TransferCache* cache = nullptr, const HostDirectLight& hostDirect = {});
   ~Interreflection();
 
   // Interreflected E in lx at each point (the photometric sum of the channels), the sun's
@@ -90,7 +96,7 @@ class Interreflection {
   // The constructor's work with hierarchical links (MeshOptions::linkError > 0).
   void solveHierarchically(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
                            const MeshOptions& mesh, const EngineOptions& engine,
-                           TransferCache* cache);
+                           TransferCache* cache, const HostDirectLight& hostDirect);
 
   SurfaceMesh mesh_;
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements

@@ -17,13 +17,19 @@ bool hasOwnSource(const Scene& scene, const Opening& opening) {
                      [&](const Source& s) { return s.opening == opening.name; });
 }
 
-// The openings the sky lights, in the room's order.
-std::vector<const Opening*> skyOpenings(const Scene& scene) {
-  std::vector<const Opening*> lit;
-  if (!scene.sky || !scene.room) return lit;
-  for (const Opening& opening : scene.room->openings)
-    if (!hasOwnSource(scene, opening)) lit.push_back(&opening);
-  return lit;
+// A solid that reaches out of the room's outer box (its interior box grown by the wall's
+// thickness) by more than `tolerance`: an obstruction outside the room.
+bool reachesOutside(const Solid& solid, const Room& room, double tolerance) {
+  const double reach = room.wallThickness + tolerance;
+  for (const Vec3& v : solid.shape.vertices())
+    if ((v.array() < -reach).any() || (v.array() > room.size.array() + reach).any()) return true;
+  return false;
+}
+
+// The openings whose sky and ground the kernel takes as sources (none when the host does).
+std::vector<const Opening*> kernelSkyOpenings(const Scene& scene) {
+  if (skyOnHost(scene)) return {};
+  return skyOpenings(scene);
 }
 
 // The vertical span of a polygon (m).
@@ -49,14 +55,14 @@ std::vector<ConvexPolygon> cutPart(const ConvexPolygon& face, const Plane& bound
   return {part};
 }
 
-}  // namespace
-
-Scene daylightScene(const Scene& scene, double height) {
+// `scene` with a sky and a ground source per opening of `openings`, cut at `height` (m).
+Scene withSkySources(const Scene& scene, const std::vector<const Opening*>& openings,
+                     double height) {
   Scene lit = scene;
   if (!scene.sky) return lit;
   const Sky& sky = *scene.sky;
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
-  for (const Opening* opening : skyOpenings(scene)) {
+  for (const Opening* opening : openings) {
     Source skySource;
     skySource.name = opening->name + ".sky";
     skySource.faces = cutPart(opening->outer, Plane{-Vec3::UnitZ(), -height}, tolerance);
@@ -76,9 +82,36 @@ Scene daylightScene(const Scene& scene, double height) {
   return lit;
 }
 
+}  // namespace
+
+std::vector<const Opening*> skyOpenings(const Scene& scene) {
+  std::vector<const Opening*> lit;
+  if (!scene.sky || !scene.room) return lit;
+  for (const Opening& opening : scene.room->openings)
+    if (!hasOwnSource(scene, opening)) lit.push_back(&opening);
+  return lit;
+}
+
+bool skyOnHost(const Scene& scene) {
+  if (!scene.sky || !scene.room) return false;
+  if (scene.sky->model == SkyModel::CieGeneral) return true;
+  const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  return std::any_of(scene.solids.begin(), scene.solids.end(), [&](const Solid& solid) {
+    return reachesOutside(solid, *scene.room, tolerance);
+  });
+}
+
+Scene skyFacesScene(const Scene& scene) {
+  return withSkySources(scene, skyOpenings(scene), scene.bounds().lo.z() - 1.0);
+}
+
+Scene daylightScene(const Scene& scene, double height) {
+  return withSkySources(scene, kernelSkyOpenings(scene), height);
+}
+
 std::vector<DaylightGroup> daylightGroups(const Scene& scene, std::span<const SamplePoint> points) {
   std::vector<DaylightGroup> groups;
-  const std::vector<const Opening*> openings = skyOpenings(scene);
+  const std::vector<const Opening*> openings = kernelSkyOpenings(scene);
   if (openings.empty()) {
     DaylightGroup all;
     for (std::size_t i = 0; i < points.size(); ++i) all.points.push_back(i);
@@ -111,7 +144,7 @@ std::vector<SamplePoint> groupPoints(const DaylightGroup& group,
 
 std::vector<double> estimateByGroup(const Scene& scene, std::span<const SamplePoint> points,
                                     const SceneEstimate& estimate) {
-  if (!scene.sky) return estimate(scene, points);
+  if (!scene.sky || skyOnHost(scene)) return estimate(daylightScene(scene, 0.0), points);
   std::vector<double> values(points.size(), 0.0);
   for (const DaylightGroup& group : daylightGroups(scene, points)) {
     const std::vector<double> part =

@@ -18,6 +18,11 @@
 //
 // An opening that has an `opening:` source of its own keeps that source (with the same τ) and
 // gets no sky: the explicit source wins.
+//
+// A solid outside the room (an overhang, a fin, a building across the street) lies beyond the
+// opening's rectangle, where a source's occluders cannot be. A scene with one is lit by the sky
+// on the host instead (skyOnHost; illuminance/skylight.hpp), exactly in double past every solid:
+// it then has no sky or ground sources here.
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -28,10 +33,24 @@
 
 namespace penumbra {
 
+// The openings the sky lights (those without an `opening:` source), in the room's order; none
+// without a sky or a room.
+std::vector<const Opening*> skyOpenings(const Scene& scene);
+
+// Whether the sky of `scene` is computed on the host (illuminance/skylight.hpp) rather than as
+// the kernel's sources below: a sky and a room, and either a solid that reaches out of the room's
+// outer box (the interior box grown by the wall's thickness) or a `cie-general` sky (patches).
+bool skyOnHost(const Scene& scene);
+
+// `scene` with a source per sky-lit opening, its whole outer rectangle at the sky's zenith
+// luminance: what the interreflection's mesh takes to find the faces that see an opening,
+// wherever the sky itself is computed.
+Scene skyFacesScene(const Scene& scene);
+
 // `scene` with, appended to its sources, a sky source and a ground source per opening lit by
 // the sky (named "<opening>.sky" and "<opening>.ground"), cut at `height` (m). Every height gives
 // the same sources in the same order; one whose part of the opening is empty (thinner than the
-// scene's length tolerance) has no faces. Without a sky: `scene` unchanged.
+// scene's length tolerance) has no faces. Without a sky, or with skyOnHost: `scene` unchanged.
 Scene daylightScene(const Scene& scene, double height);
 
 // Points that share one daylightScene: their indices, and a height that gives it.
@@ -41,7 +60,7 @@ struct DaylightGroup {
 };
 
 // The groups of `points` (each point in exactly one, groups in order of their first point).
-// Without a sky: one group of all points.
+// Without a sky, or with skyOnHost: one group of all points.
 std::vector<DaylightGroup> daylightGroups(const Scene& scene, std::span<const SamplePoint> points);
 
 // The points of one group, in its order.

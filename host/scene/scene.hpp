@@ -113,13 +113,19 @@ struct Room {
 // The standard sky of a daylight scene (docs/method.md, "Daylight"): its luminance from the
 // unobstructed horizontal illuminance it gives, and the ground below the horizon, uniform of
 // luminance ρ_g·E_h/π. The sky is seen through the room's openings (scene/daylight.hpp).
-enum class SkyModel { Uniform, CieOvercast };
+// `cie-general` is one of the 15 CIE standard general skies (scene/cie_general_sky.hpp) as a sky
+// of patches (illuminance/patch_sky.hpp), scaled so that it gives E_h.
+enum class SkyModel { Uniform, CieOvercast, CieGeneral };
 
 struct Sky {
   SkyModel model = SkyModel::CieOvercast;
   double horizontalIlluminance = 10000.0;  // lx: E_h, outdoors on an unobstructed horizontal plane
   double groundReflectance = 0.2;          // ρ_g in [0, 1]
+  int cieType = 1;      // CieGeneral: the type, 1..15 (ISO 15469 / CIE S 011, Table 1)
+  int subdivision = 1;  // CieGeneral: 1 Tregenza's 145 patches, m > 1 Reinhart's 144 m² + 1
   // L at the zenith (cd/m²): E_h = 7π·L_z/9 for the CIE overcast sky, π·L for the uniform one.
+  // For CieGeneral, whose scale comes from its patches, the uniform sky's E_h/π: only where the
+  // openings let light in is read from it (the interreflection's mesh).
   double zenithLuminance() const;
   double groundLuminance() const;  // cd/m²: ρ_g·E_h/π
 };

@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "geometry/tolerance.hpp"
+#include "scene/cie_general_sky.hpp"
 #include "scene/eye_placement.hpp"
 #include "scene/grid_builder.hpp"
 #include "scene/grid_placement.hpp"
@@ -119,6 +120,11 @@ Scene buildScene(const SceneSpec& spec, const std::filesystem::path& file) {
   }
   scene.site = spec.site;
   if (spec.sun) scene.sun = placeSun(*spec.sun, spec.site, context);
+  if (scene.sky && scene.sky->model == SkyModel::CieGeneral && !scene.sun &&
+      dependsOnSun(cieSkyParameters(scene.sky->cieType)))
+    context.fail(spec.skyWhere, "CIE sky type " + std::to_string(scene.sky->cieType) +
+                                    " depends on the sun's position: add 'sun:' (and 'site:'); "
+                                    "types 1, 3 and 5 do not");
   // Sources before solids: a curved solid orients its facets towards the strongest source.
   for (const SourceSpec& source : spec.sources) {
     scene.sources.push_back(buildSource(source, scene.room, context));

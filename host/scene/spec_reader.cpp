@@ -5,6 +5,7 @@
 #include <string>
 #include <tuple>
 
+#include "scene/cie_general_sky.hpp"
 #include "scene/grid_reader.hpp"
 #include "scene/luminaire_reader.hpp"
 #include "scene/observer_reader.hpp"
@@ -113,6 +114,16 @@ double readFraction(const Reader& reader, const Field& field, std::string_view w
   return value;
 }
 
+// A whole number in [lo, hi].
+int readWholeNumber(const Reader& reader, const Field& field, int lo, int hi,
+                    std::string_view what) {
+  const double value = reader.number(field);
+  if (!(value >= lo && value <= hi && value == std::floor(value)))
+    reader.fail(field.where, std::string(what) + " is a whole number from " + std::to_string(lo) +
+                                 " to " + std::to_string(hi) + ", got " + formatNumber(value));
+  return static_cast<int>(value);
+}
+
 OpeningSpec readOpening(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "an opening");
   map.allowOnly({"name", "wall", "x", "z", "width", "height", "transmittance"}, "an opening");
@@ -137,7 +148,8 @@ OpeningSpec readOpening(const Reader& reader, const Field& field) {
 // `sky: {model: cie-overcast | uniform, horizontal_illuminance_lx: E_h, ground_reflectance: ρ_g}`
 Sky readSky(const Reader& reader, const Field& field) {
   const MapView map = reader.map(field, "the sky");
-  map.allowOnly({"model", "horizontal_illuminance_lx", "ground_reflectance"}, "the sky");
+  map.allowOnly({"model", "horizontal_illuminance_lx", "ground_reflectance", "type", "subdivision"},
+                "the sky");
   Sky sky;
   const Field model = map.require("model");
   const std::string name = reader.text(model);
@@ -145,9 +157,24 @@ Sky readSky(const Reader& reader, const Field& field) {
     sky.model = SkyModel::CieOvercast;
   } else if (name == "uniform") {
     sky.model = SkyModel::Uniform;
+  } else if (name == "cie-general") {
+    sky.model = SkyModel::CieGeneral;
   } else {
-    const std::string models = "cie-overcast (the CIE standard overcast sky) and uniform";
+    const std::string models =
+        "cie-overcast (the CIE standard overcast sky), uniform and cie-general (the 15 CIE "
+        "standard general skies)";
     reader.fail(model.where, "unknown sky model '" + name + "'; the models are " + models);
+  }
+  const std::optional<Field> type = map.find("type");
+  const std::optional<Field> subdivision = map.find("subdivision");
+  if (sky.model != SkyModel::CieGeneral) {
+    for (const std::optional<Field>& key : {type, subdivision})
+      if (key) reader.fail(key->where, "only a 'cie-general' sky takes 'type' and 'subdivision'");
+  } else {
+    if (!type) reader.fail(model.where, "a 'cie-general' sky needs 'type' (1 to 15)");
+    sky.cieType = readWholeNumber(reader, *type, 1, kCieSkyTypes, "a CIE sky type");
+    if (subdivision)
+      sky.subdivision = readWholeNumber(reader, *subdivision, 1, 8, "a sky subdivision");
   }
   sky.horizontalIlluminance = reader.positive(map.require("horizontal_illuminance_lx"), "lx");
   if (const std::optional<Field> g = map.find("ground_reflectance"))

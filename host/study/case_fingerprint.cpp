@@ -34,8 +34,14 @@ std::string caseFingerprint(const Scene& scene, const CaseOutputs& outputs) {
   }
   // The sky and what it is seen through.
   if (scene.sky) {
-    h.add(std::string_view(scene.sky->model == SkyModel::CieOvercast ? "sky cie-overcast"
-                                                                     : "sky uniform"));
+    if (scene.sky->model == SkyModel::CieGeneral) {
+      h.add(std::string_view("sky cie-general"));
+      h.add(static_cast<double>(scene.sky->cieType));
+      h.add(static_cast<double>(scene.sky->subdivision));
+    } else {
+      h.add(std::string_view(scene.sky->model == SkyModel::CieOvercast ? "sky cie-overcast"
+                                                                       : "sky uniform"));
+    }
     h.add(scene.sky->horizontalIlluminance);
     h.add(scene.sky->groundReflectance);
     for (const Opening& opening : scene.room->openings) {

@@ -1,0 +1,112 @@
+#include "illuminance/skylight.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include "geometry/tolerance.hpp"
+#include "illuminance/far_polygon.hpp"
+#include "scene/cie_general_sky.hpp"
+#include "scene/daylight.hpp"
+
+namespace penumbra {
+namespace {
+
+// What the sky needs at one point: the scene, its tolerance, where far polygons stand, and the
+// patches of a sky of patches (null for the uniform and overcast skies).
+struct SkyContext {
+  const Scene& scene;
+  const Sky& sky;
+  double tolerance = 0.0;
+  FarPlacement placement;
+  const PatchSky* patches = nullptr;
+};
+
+// E from a sky of patches through `hole` (the opening's outer rectangle): each piece, placed
+// beyond every solid, cut to the directions through the hole, integrated past the solids.
+double patchIlluminance(const SkyContext& context, const ConvexPolygon& hole,
+                        const SamplePoint& point) {
+  const Vec3& p = point.position;
+  const double distance = context.placement.distance(p);
+  double e = 0.0;
+  for (const SkyPiece& piece : context.patches->division.pieces) {
+    const ConvexPolygon part = throughHole(piecePolygon(piece, p, distance), p, hole);
+    if (part.empty()) continue;
+    e += context.patches->luminance[static_cast<std::size_t>(piece.patch)] *
+         visibleProjectedSolidAngle(part, point, context.scene, context.tolerance);
+  }
+  return e;
+}
+
+// E from the uniform or overcast sky over `skyPart` (a far polygon above P's horizon): the
+// luminance polynomial's moments over the part P sees, times L_z.
+double skyIlluminance(const SkyContext& context, const ConvexPolygon& skyPart,
+                      const SamplePoint& point) {
+  const Sky& sky = context.sky;
+  if (sky.model == SkyModel::CieOvercast) {
+    // L_z (1 + 2 ω_z) / 3.
+    const std::vector<double> m =
+        visibleMoments(skyPart, point, context.scene, context.tolerance, Vec3::UnitZ(), 1);
+    return sky.zenithLuminance() * (m[0] + 2.0 * m[1]) / 3.0;
+  }
+  return sky.zenithLuminance() *
+         visibleProjectedSolidAngle(skyPart, point, context.scene, context.tolerance);
+}
+
+// E at `point` through `opening` (before its transmittance).
+double throughOpening(const SkyContext& context, const Opening& opening, const SamplePoint& point) {
+  const Vec3& p = point.position;
+  if (!(opening.outer.plane().signedDistance(p) > context.tolerance)) return 0.0;
+  const ConvexPolygon far = farImage(opening.outer, p, context.placement.distance(p));
+  const ConvexPolygon skyPart = far.clipped(Plane{-Vec3::UnitZ(), -p.z()}, 0.0);
+  const ConvexPolygon groundPart = far.clipped(Plane{Vec3::UnitZ(), p.z()}, 0.0);
+  double e = 0.0;
+  if (context.patches)
+    e += patchIlluminance(context, opening.outer, point);
+  else if (!skyPart.empty())
+    e += skyIlluminance(context, skyPart, point);
+  if (!groundPart.empty())
+    e += context.sky.groundLuminance() *
+         visibleProjectedSolidAngle(groundPart, point, context.scene, context.tolerance);
+  return e;
+}
+
+}  // namespace
+
+PatchSky cieGeneralSky(const Sky& sky, const Vec3& sunDirection) {
+  const CieSkyParameters& parameters = cieSkyParameters(sky.cieType);
+  PatchSky patches = patchSky(sky.subdivision, [&](const Vec3& omega) {
+    return cieRelativeLuminance(parameters, omega, sunDirection);
+  });
+  const double scale = sky.horizontalIlluminance / horizontalIlluminance(patches);
+  for (double& l : patches.luminance) l *= scale;
+  return patches;
+}
+
+std::vector<double> skylight(const Scene& scene, std::span<const SamplePoint> points) {
+  if (scene.sky && scene.sky->model == SkyModel::CieGeneral) {
+    const PatchSky patches =
+        cieGeneralSky(*scene.sky, scene.sun ? scene.sun->direction : Vec3(Vec3::UnitZ()));
+    return patchSkylight(scene, patches, points);
+  }
+  return patchSkylight(scene, std::nullopt, points);
+}
+
+std::vector<double> patchSkylight(const Scene& scene, const std::optional<PatchSky>& patches,
+                                  std::span<const SamplePoint> points) {
+  std::vector<double> e(points.size(), 0.0);
+  if (!scene.sky) return e;
+  SkyContext context{scene, *scene.sky, Tolerance::forSceneSize(scene.size()).length,
+                     FarPlacement::of(scene)};
+  if (patches) context.patches = &*patches;
+  const std::vector<const Opening*> openings = skyOpenings(scene);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 8),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i)
+                        for (const Opening* opening : openings)
+                          e[i] +=
+                              opening->transmittance * throughOpening(context, *opening, points[i]);
+                    });
+  return e;
+}
+
+}  // namespace penumbra
