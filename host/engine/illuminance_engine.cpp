@@ -34,6 +34,15 @@ struct IlluminanceEngine::State {
   // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
   std::unique_ptr<LuminaireEngine> luminaires;
   bool hasLuminaires = false;
+  // The buffers of a launch, kept from one launch to the next (DeviceBuffer::reserve): a grid's
+  // batches have one size, so every batch after the first reuses the first one's memory.
+  static constexpr int kPointArrays = 9;  // the position's hi and lo parts, the normal
+  struct LaunchBuffers {
+    std::vector<float> coords[kPointArrays];  // host side, one float8 lane per point
+    std::vector<cl_int> own;
+    DeviceBuffer points[kPointArrays], pointSolids, patchFaces, candidates, illuminance, errors,
+        classes;
+  } launchBuffers;
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d), options(o), program(d, "illuminance", illuminanceBuildOptions()) {
@@ -244,10 +253,12 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   const std::size_t links = linked ? linked->faces.size() : 0;
   // Structure of arrays, one float8 lane per point: the position's hi parts, its lo parts
   // (toPosition), the normal. Padding repeats the last point.
-  constexpr int kPointArrays = 9;
-  std::vector<float> coords[kPointArrays];
+  constexpr int kPointArrays = State::kPointArrays;
+  State::LaunchBuffers& kept = state_->launchBuffers;
+  std::vector<float>(&coords)[kPointArrays] = kept.coords;
   for (auto& c : coords) c.resize(padded);
-  std::vector<cl_int> own(padded);
+  std::vector<cl_int>& own = kept.own;
+  own.resize(padded);
   const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
   for (std::size_t i = 0; i < padded; ++i) {
     const SamplePoint& p = points[std::min(i, n - 1)];
@@ -308,12 +319,15 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
         "even the smallest batch does not fit beside the scene; use a smaller scene or a device "
         "with more memory (--device)");
   }
-  DeviceBuffer pointBuffers[kPointArrays];
+  DeviceBuffer(&pointBuffers)[kPointArrays] = kept.points;
   for (int k = 0; k < kPointArrays; ++k)
-    pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
-  DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
-  DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
-  DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
+    DeviceBuffer::uploadInto<float>(d, pointBuffers[k], coords[k]);
+  DeviceBuffer& ownBuffer = kept.pointSolids;
+  DeviceBuffer::uploadInto<cl_int>(d, ownBuffer, own);
+  DeviceBuffer& patchBuffer = kept.patchFaces;
+  DeviceBuffer::uploadInto<PnPatchFace>(d, patchBuffer, table.entries);
+  DeviceBuffer& candidateBuffer = kept.candidates;
+  DeviceBuffer::uploadInto<cl_int>(d, candidateBuffer, table.candidates);
   // Unlinked launches do not read the link buffers: the point solids stand in for them.
   DeviceBuffer linkStartBuffer, linkFaceBuffer;
   if (linked) {
@@ -321,9 +335,12 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
     linkFaceBuffer = DeviceBuffer::upload<cl_int>(
         d, std::vector<cl_int>(linked->faces.begin(), linked->faces.end()));
   }
-  DeviceBuffer out = DeviceBuffer::allocate(d, outValues * sizeof(float));
-  DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
-  DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
+  DeviceBuffer& out = kept.illuminance;
+  DeviceBuffer::reserve(d, out, outValues * sizeof(float));
+  DeviceBuffer& errors = kept.errors;
+  DeviceBuffer::reserve(d, errors, workItems * sizeof(cl_int));
+  DeviceBuffer& classes = kept.classes;
+  DeviceBuffer::reserve(d, classes, classBytes);
 
   PnLaunchParams params{};
   params.faceCount = static_cast<cl_int>(state_->packed.faces.size());
