@@ -109,7 +109,7 @@ void IlluminanceEngine::setScene(const Scene& scene) {
 }
 
 std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> points) {
-  return evaluate(points).illuminance;
+  return evaluateParts(points, Parts{false, false}).illuminance;
 }
 
 namespace {
@@ -131,7 +131,12 @@ std::string kernelError(int bits, const SamplePoint& p) {
 }  // namespace
 
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
-  IlluminanceResult result = evaluateSources(points, bySource);
+  return evaluateParts(points, Parts{bySource, true});
+}
+
+IlluminanceResult IlluminanceEngine::evaluateParts(std::span<const SamplePoint> points,
+                                                   Parts parts) {
+  IlluminanceResult result = evaluateSources(points, parts);
   if (state_->hasLuminaires) {
     LuminaireEngine::Result luminaires = state_->luminaires->evaluate(points);
     result.luminaires = std::move(luminaires.illuminance);
@@ -144,25 +149,25 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
 }
 
 IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint> points,
-                                                     bool bySource) {
+                                                     Parts parts) {
   // The plain path takes the points as given: its work per point does not
   // depend on the point's neighbours.
-  if (!state_->options.culling || points.size() <= PN_LANES)
-    return evaluateInOrder(points, bySource);
+  if (!state_->options.culling || points.size() <= PN_LANES) return evaluateInOrder(points, parts);
   const std::vector<std::size_t> order = mortonOrder(points);
   std::vector<SamplePoint> sorted(points.size());
   for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = points[order[i]];
-  const IlluminanceResult inOrder = evaluateInOrder(sorted, bySource);
+  const IlluminanceResult inOrder = evaluateInOrder(sorted, parts);
   IlluminanceResult result;
   result.sourceCount = inOrder.sourceCount;
   const std::size_t sources = static_cast<std::size_t>(inOrder.sourceCount);
   result.illuminance.resize(inOrder.illuminance.size());
   result.shadowClass.resize(inOrder.shadowClass.size());
   result.bySource.resize(inOrder.bySource.size());
+  const bool perSource = !inOrder.shadowClass.empty() || !inOrder.bySource.empty();
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t to = order[i];
     result.illuminance[to] = inOrder.illuminance[i];
-    for (std::size_t s = 0; s < sources; ++s) {
+    for (std::size_t s = 0; perSource && s < sources; ++s) {
       if (!inOrder.shadowClass.empty())
         result.shadowClass[to * sources + s] = inOrder.shadowClass[i * sources + s];
       if (!inOrder.bySource.empty())
@@ -173,12 +178,13 @@ IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint
 }
 
 IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint> points,
-                                                     bool bySource) {
+                                                     Parts parts) {
+  const bool bySource = parts.bySource;
   IlluminanceResult result;
   result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
   if (n == 0) return result;
-  const KernelOutput output = launch(points, bySource, true);
+  const KernelOutput output = launch(points, bySource, parts.classes);
   const std::vector<float>& e = output.illuminance;
   const std::size_t padded = output.padded;
   if (bySource) {
@@ -194,6 +200,7 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
     result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
   }
 
+  if (!parts.classes) return result;
   // The kernel writes classes source by source ([source][padded point]); callers read them point
   // by point.
   result.shadowClass.resize(n * result.sourceCount);

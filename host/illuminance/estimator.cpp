@@ -61,7 +61,9 @@ PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
   if (!engine_) {
     e.total = daylightReference(*scene_, points);
   } else {
-    e.total = evaluateDaylight(*engine_, *scene_, points).illuminance;
+    // Without a sky, E alone: the shadow classes are neither downloaded nor reordered.
+    e.total = scene_->sky ? evaluateDaylight(*engine_, *scene_, points).illuminance
+                          : engine_->illuminance(points);
     if (interreflection_) {
       e.direct = e.total;
       const std::vector<double> indirect = interreflection_->indirect(points);
