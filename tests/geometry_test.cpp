@@ -11,6 +11,7 @@
 #include "geometry/convex_polygon.hpp"
 #include "geometry/convex_polyhedron.hpp"
 #include "geometry/exact_predicates.hpp"
+#include "geometry/morton_order.hpp"
 #include "geometry/nishita.hpp"
 
 namespace penumbra {
@@ -773,6 +774,56 @@ TEST(Nishita, FaceClassesOfABoxAgainstAnAreaSource) {
                           : plane.normal.z() < -0.5 ? Side::Negative
                                                     : Side::Straddles;
     EXPECT_EQ(faceSeesSource, expected);
+  }
+}
+
+// The Morton key of a point, one bit at a time: bit b of cell coordinate k goes to bit 3b + k.
+std::uint64_t mortonKeyBitByBit(const Vec3& p, const Vec3& lo, double scale, double cells) {
+  std::uint64_t key = 0;
+  for (int k = 0; k < 3; ++k) {
+    const auto cell = static_cast<std::uint64_t>(std::clamp((p[k] - lo[k]) * scale, 0.0, cells));
+    for (int b = 0; b < 21; ++b) key |= ((cell >> b) & 1u) << (3 * b + k);
+  }
+  return key;
+}
+
+// mortonOrder sorts by key with ties in input order: the same order as a stable comparison sort
+// of keys interleaved bit by bit, for a grid batch (keys sharing their high bits, repeated
+// points), points scattered over a room and points a few cells apart.
+TEST(MortonOrder, AgreesWithAStableSortOfBitByBitKeys) {
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  std::vector<SamplePoint> grid, scattered;
+  for (int row = 0; row < 40; ++row)
+    for (int column = 0; column < 300; ++column)
+      grid.push_back({Vec3(0.01 * column, 2.0 + 0.01 * row, 0.75), Vec3::UnitZ(), -1});
+  grid.push_back(grid[17]);  // a repeated point: equal keys keep their order
+  for (int i = 0; i < 5000; ++i)
+    scattered.push_back(
+        {Vec3(12.0 * u(random), 8.0 * u(random), 3.0 * u(random)), Vec3::UnitZ(), -1});
+  // Points a few cells apart, where the low bits of the keys decide the order.
+  std::vector<SamplePoint> cellsApart = {{Vec3(1.0, 1.0, 1.0), Vec3::UnitZ(), -1}};
+  const double cell = 1.0 / (double{1 << 21} - 1.0);
+  for (int i = 7; i >= 0; --i)
+    for (int j = 0; j < 8; ++j)
+      for (int k = 7; k >= 0; --k)
+        cellsApart.push_back({cell * Vec3(i + 0.5, j + 0.5, k + 0.5), Vec3::UnitZ(), -1});
+  for (const std::vector<SamplePoint>& points : {grid, scattered, cellsApart}) {
+    Vec3 lo = points[0].position, hi = lo;
+    for (const SamplePoint& p : points) {
+      lo = lo.cwiseMin(p.position);
+      hi = hi.cwiseMax(p.position);
+    }
+    const double cells = double{1 << 21} - 1.0;
+    const double scale = cells / (hi - lo).maxCoeff();
+    std::vector<std::uint64_t> keys;
+    for (const SamplePoint& p : points)
+      keys.push_back(mortonKeyBitByBit(p.position, lo, scale, cells));
+    std::vector<std::size_t> expected(points.size());
+    for (std::size_t i = 0; i < expected.size(); ++i) expected[i] = i;
+    std::stable_sort(expected.begin(), expected.end(),
+                     [&](std::size_t a, std::size_t b) { return keys[a] < keys[b]; });
+    EXPECT_EQ(mortonOrder(points), expected);
   }
 }
 

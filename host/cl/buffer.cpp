@@ -55,6 +55,23 @@ DeviceBuffer DeviceBuffer::allocate(Device& device, std::size_t bytes) {
   return result;
 }
 
+void DeviceBuffer::reserve(Device& device, DeviceBuffer& buffer, std::size_t bytes) {
+  if (buffer.impl_->device == &device.impl() && buffer.impl_->bytes >= bytes) return;
+  buffer = DeviceBuffer();  // the old memory goes before the new is allocated
+  buffer = allocate(device, bytes);
+}
+
+void DeviceBuffer::uploadInto(Device& device, DeviceBuffer& buffer, const void* data,
+                              std::size_t bytes) {
+  reserve(device, buffer, bytes);
+  if (bytes == 0) return;
+  try {
+    device.impl().queue.enqueueWriteBuffer(buffer.impl_->buffer, CL_TRUE, 0, bytes, data);
+  } catch (const cl::Error& error) {
+    throw std::runtime_error(fmt::format("uploading {} bytes: {}", bytes, describe(error)));
+  }
+}
+
 void DeviceBuffer::download(void* destination, std::size_t bytes) const {
   if (bytes == 0) return;
   try {

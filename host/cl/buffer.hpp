@@ -32,8 +32,19 @@ class DeviceBuffer {
     return upload(device, data.data(), data.size_bytes());
   }
   static DeviceBuffer allocate(Device& device, std::size_t bytes);  // read-write
+  // A read-write buffer of at least `bytes`, kept from one call to the next: `buffer` itself
+  // while it is large enough, a new one otherwise. What a launch repeated batch after batch
+  // uses, so that the device memory of every batch after the first is written, not allocated
+  // and faulted in again (on a CPU device, fresh pages cost about as much as the copy).
+  static void reserve(Device& device, DeviceBuffer& buffer, std::size_t bytes);
+  // reserve, then copies `bytes` from `data` into the buffer's start.
+  static void uploadInto(Device& device, DeviceBuffer& buffer, const void* data, std::size_t bytes);
+  template <class T>
+  static void uploadInto(Device& device, DeviceBuffer& buffer, std::span<const T> data) {
+    uploadInto(device, buffer, data.data(), data.size_bytes());
+  }
   void download(void* destination, std::size_t bytes) const;
-  std::size_t bytes() const;
+  std::size_t bytes() const;  // as asked for (reserve: the largest asked for so far)
 
   struct Impl;
   Impl& impl() const { return *impl_; }

@@ -34,6 +34,15 @@ struct IlluminanceEngine::State {
   // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
   std::unique_ptr<LuminaireEngine> luminaires;
   bool hasLuminaires = false;
+  // The buffers of a launch, kept from one launch to the next (DeviceBuffer::reserve): a grid's
+  // batches have one size, so every batch after the first reuses the first one's memory.
+  static constexpr int kPointArrays = 9;  // the position's hi and lo parts, the normal
+  struct LaunchBuffers {
+    std::vector<float> coords[kPointArrays];  // host side, one float8 lane per point
+    std::vector<cl_int> own;
+    DeviceBuffer points[kPointArrays], pointSolids, patchFaces, candidates, illuminance, errors,
+        classes;
+  } launchBuffers;
 
   State(compute::Device& d, const Scene& scene, EngineOptions o)
       : device(&d), options(o), program(d, "illuminance", illuminanceBuildOptions()) {
@@ -100,7 +109,7 @@ void IlluminanceEngine::setScene(const Scene& scene) {
 }
 
 std::vector<double> IlluminanceEngine::illuminance(std::span<const SamplePoint> points) {
-  return evaluate(points).illuminance;
+  return evaluateParts(points, Parts{false, false}).illuminance;
 }
 
 namespace {
@@ -122,7 +131,12 @@ std::string kernelError(int bits, const SamplePoint& p) {
 }  // namespace
 
 IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> points, bool bySource) {
-  IlluminanceResult result = evaluateSources(points, bySource);
+  return evaluateParts(points, Parts{bySource, true});
+}
+
+IlluminanceResult IlluminanceEngine::evaluateParts(std::span<const SamplePoint> points,
+                                                   Parts parts) {
+  IlluminanceResult result = evaluateSources(points, parts);
   if (state_->hasLuminaires) {
     LuminaireEngine::Result luminaires = state_->luminaires->evaluate(points);
     result.luminaires = std::move(luminaires.illuminance);
@@ -135,25 +149,25 @@ IlluminanceResult IlluminanceEngine::evaluate(std::span<const SamplePoint> point
 }
 
 IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint> points,
-                                                     bool bySource) {
+                                                     Parts parts) {
   // The plain path takes the points as given: its work per point does not
   // depend on the point's neighbours.
-  if (!state_->options.culling || points.size() <= PN_LANES)
-    return evaluateInOrder(points, bySource);
+  if (!state_->options.culling || points.size() <= PN_LANES) return evaluateInOrder(points, parts);
   const std::vector<std::size_t> order = mortonOrder(points);
   std::vector<SamplePoint> sorted(points.size());
   for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = points[order[i]];
-  const IlluminanceResult inOrder = evaluateInOrder(sorted, bySource);
+  const IlluminanceResult inOrder = evaluateInOrder(sorted, parts);
   IlluminanceResult result;
   result.sourceCount = inOrder.sourceCount;
   const std::size_t sources = static_cast<std::size_t>(inOrder.sourceCount);
   result.illuminance.resize(inOrder.illuminance.size());
   result.shadowClass.resize(inOrder.shadowClass.size());
   result.bySource.resize(inOrder.bySource.size());
+  const bool perSource = !inOrder.shadowClass.empty() || !inOrder.bySource.empty();
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t to = order[i];
     result.illuminance[to] = inOrder.illuminance[i];
-    for (std::size_t s = 0; s < sources; ++s) {
+    for (std::size_t s = 0; perSource && s < sources; ++s) {
       if (!inOrder.shadowClass.empty())
         result.shadowClass[to * sources + s] = inOrder.shadowClass[i * sources + s];
       if (!inOrder.bySource.empty())
@@ -164,12 +178,13 @@ IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint
 }
 
 IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint> points,
-                                                     bool bySource) {
+                                                     Parts parts) {
+  const bool bySource = parts.bySource;
   IlluminanceResult result;
   result.sourceCount = state_->packed.sourceCount;
   const std::size_t n = points.size();
   if (n == 0) return result;
-  const KernelOutput output = launch(points, bySource, true);
+  const KernelOutput output = launch(points, bySource, parts.classes);
   const std::vector<float>& e = output.illuminance;
   const std::size_t padded = output.padded;
   if (bySource) {
@@ -185,6 +200,7 @@ IlluminanceResult IlluminanceEngine::evaluateInOrder(std::span<const SamplePoint
     result.illuminance.assign(e.begin(), e.begin() + static_cast<std::ptrdiff_t>(n));
   }
 
+  if (!parts.classes) return result;
   // The kernel writes classes source by source ([source][padded point]); callers read them point
   // by point.
   result.shadowClass.resize(n * result.sourceCount);
@@ -244,10 +260,12 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   const std::size_t links = linked ? linked->faces.size() : 0;
   // Structure of arrays, one float8 lane per point: the position's hi parts, its lo parts
   // (toPosition), the normal. Padding repeats the last point.
-  constexpr int kPointArrays = 9;
-  std::vector<float> coords[kPointArrays];
+  constexpr int kPointArrays = State::kPointArrays;
+  State::LaunchBuffers& kept = state_->launchBuffers;
+  std::vector<float>(&coords)[kPointArrays] = kept.coords;
   for (auto& c : coords) c.resize(padded);
-  std::vector<cl_int> own(padded);
+  std::vector<cl_int>& own = kept.own;
+  own.resize(padded);
   const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
   for (std::size_t i = 0; i < padded; ++i) {
     const SamplePoint& p = points[std::min(i, n - 1)];
@@ -308,12 +326,15 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
         "even the smallest batch does not fit beside the scene; use a smaller scene or a device "
         "with more memory (--device)");
   }
-  DeviceBuffer pointBuffers[kPointArrays];
+  DeviceBuffer(&pointBuffers)[kPointArrays] = kept.points;
   for (int k = 0; k < kPointArrays; ++k)
-    pointBuffers[k] = DeviceBuffer::upload<float>(d, coords[k]);
-  DeviceBuffer ownBuffer = DeviceBuffer::upload<cl_int>(d, own);
-  DeviceBuffer patchBuffer = DeviceBuffer::upload<PnPatchFace>(d, table.entries);
-  DeviceBuffer candidateBuffer = DeviceBuffer::upload<cl_int>(d, table.candidates);
+    DeviceBuffer::uploadInto<float>(d, pointBuffers[k], coords[k]);
+  DeviceBuffer& ownBuffer = kept.pointSolids;
+  DeviceBuffer::uploadInto<cl_int>(d, ownBuffer, own);
+  DeviceBuffer& patchBuffer = kept.patchFaces;
+  DeviceBuffer::uploadInto<PnPatchFace>(d, patchBuffer, table.entries);
+  DeviceBuffer& candidateBuffer = kept.candidates;
+  DeviceBuffer::uploadInto<cl_int>(d, candidateBuffer, table.candidates);
   // Unlinked launches do not read the link buffers: the point solids stand in for them.
   DeviceBuffer linkStartBuffer, linkFaceBuffer;
   if (linked) {
@@ -321,9 +342,12 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
     linkFaceBuffer = DeviceBuffer::upload<cl_int>(
         d, std::vector<cl_int>(linked->faces.begin(), linked->faces.end()));
   }
-  DeviceBuffer out = DeviceBuffer::allocate(d, outValues * sizeof(float));
-  DeviceBuffer errors = DeviceBuffer::allocate(d, workItems * sizeof(cl_int));
-  DeviceBuffer classes = DeviceBuffer::allocate(d, classBytes);
+  DeviceBuffer& out = kept.illuminance;
+  DeviceBuffer::reserve(d, out, outValues * sizeof(float));
+  DeviceBuffer& errors = kept.errors;
+  DeviceBuffer::reserve(d, errors, workItems * sizeof(cl_int));
+  DeviceBuffer& classes = kept.classes;
+  DeviceBuffer::reserve(d, classes, classBytes);
 
   PnLaunchParams params{};
   params.faceCount = static_cast<cl_int>(state_->packed.faces.size());

@@ -42,7 +42,8 @@ class IlluminanceEngine {
   // cases. Afterwards illuminance() answers for `scene` only.
   void setScene(const Scene& scene);
 
-  // E in lx at every point, summed over all sources and luminaires.
+  // E in lx at every point, summed over all sources and luminaires: evaluate()'s values without
+  // the shadow classes.
   std::vector<double> illuminance(std::span<const SamplePoint> points);
   // E and each point's shadow class per source. With culling off the classes come from the
   // plain path's tests: Lit or Penumbra ("some occluder may block"), never Umbra.
@@ -87,10 +88,18 @@ class IlluminanceEngine {
   KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses,
                       const LinkedLaunch* linked = nullptr);
 
+  // What a call asks for beyond E: E per source, the shadow classes (illuminance() asks for
+  // neither, and skips downloading and reordering the classes).
+  struct Parts {
+    bool bySource = false;
+    bool classes = true;
+  };
+  // evaluate() with the classes only when `parts` asks for them.
+  IlluminanceResult evaluateParts(std::span<const SamplePoint> points, Parts parts);
   // The Lambertian sources' part of evaluate().
-  IlluminanceResult evaluateSources(std::span<const SamplePoint> points, bool bySource);
+  IlluminanceResult evaluateSources(std::span<const SamplePoint> points, Parts parts);
   // evaluate() for points in the order the kernel's work-items take them.
-  IlluminanceResult evaluateInOrder(std::span<const SamplePoint> points, bool bySource);
+  IlluminanceResult evaluateInOrder(std::span<const SamplePoint> points, Parts parts);
 
   struct State;
   std::unique_ptr<State> state_;

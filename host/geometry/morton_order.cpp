@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <utility>
 
 namespace penumbra {
 
@@ -17,6 +16,31 @@ std::uint64_t spreadBits(std::uint64_t v) {
   v = (v | v << 4) & 0x10c30c30c30c30c3;
   v = (v | v << 2) & 0x1249249249249249;
   return v;
+}
+
+// Sorts `order` (and `keys` with it) by ascending key, equal keys keeping their order: a least
+// significant digit first radix sort, one stable counting pass per byte in which the keys differ
+// (a grid batch's keys share their high bytes). Linear in the points, where a comparison sort
+// of a 65 536-point batch costs as much as building its patch table.
+void radixSortByKey(std::vector<std::uint64_t>& keys, std::vector<std::size_t>& order) {
+  if (keys.empty()) return;
+  std::uint64_t differing = 0;
+  for (std::uint64_t key : keys) differing |= key ^ keys.front();
+  std::vector<std::uint64_t> keysTo(keys.size());
+  std::vector<std::size_t> orderTo(order.size());
+  for (int shift = 0; shift < 64; shift += 8) {
+    if (((differing >> shift) & 0xff) == 0) continue;
+    std::size_t start[257] = {};
+    for (std::uint64_t key : keys) ++start[((key >> shift) & 0xff) + 1];
+    for (int digit = 0; digit < 256; ++digit) start[digit + 1] += start[digit];
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+      const std::size_t to = start[(keys[i] >> shift) & 0xff]++;
+      keysTo[to] = keys[i];
+      orderTo[to] = order[i];
+    }
+    keys.swap(keysTo);
+    order.swap(orderTo);
+  }
 }
 
 }  // namespace
@@ -35,17 +59,17 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
   const double extent = (hi - lo).maxCoeff();
   const double cells = double{1 << 21} - 1.0;
   const double scale = extent > 0.0 ? cells / extent : 0.0;
-  std::vector<std::pair<std::uint64_t, std::size_t>> keys(points.size());
+  std::vector<std::uint64_t> keys(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
     const Vec3 q = (points[i].position - lo) * scale;
     std::uint64_t key = 0;
     for (int k = 0; k < 3; ++k)
       key |= spreadBits(static_cast<std::uint64_t>(std::clamp(q[k], 0.0, cells))) << k;
-    keys[i] = {key, i};
+    keys[i] = key;
   }
-  std::sort(keys.begin(), keys.end());
   std::vector<std::size_t> order(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) order[i] = keys[i].second;
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  radixSortByKey(keys, order);
   return order;
 }
 

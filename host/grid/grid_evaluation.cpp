@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
@@ -217,9 +218,35 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
 
   // One chunk of consecutive grid points: up to batchSize of them outside solids (the
   // estimator's batch) and the inside points among them.
-  std::vector<SamplePoint> outside;
-  std::vector<std::size_t> outsideAt;  // offsets in the chunk
-  std::vector<int> inside, onSolid;
+  struct Chunk {
+    std::size_t first = 0;
+    std::vector<SamplePoint> outside;
+    std::vector<std::size_t> outsideAt;  // offsets in the chunk
+    std::vector<int> inside, onSolid;
+  };
+  std::size_t next = 0;
+  const auto gather = [&](Chunk& chunk) {
+    chunk.first = next;
+    chunk.outside.clear();
+    chunk.outsideAt.clear();
+    chunk.inside.clear();
+    chunk.onSolid.clear();
+    while (next < n && chunk.outside.size() < batchSize) {
+      const std::size_t k = classified(next);
+      const SamplePoint& point = aheadPoints[k];
+      const int in = aheadInside[k];
+      if (in < 0) {
+        chunk.outsideAt.push_back(chunk.inside.size());
+        chunk.outside.push_back(point);
+      }
+      chunk.inside.push_back(in);
+      chunk.onSolid.push_back(point.solid);
+      ++next;
+      // A run of inside points with nothing waiting for the estimator goes on at once.
+      if (chunk.outside.empty() && chunk.inside.size() >= batchSize) break;
+    }
+  };
+
   std::vector<double> e, direct, sun, sunReflected;
   GridMetricsSum directSums;
   SunMetricsSum sunSums;
@@ -227,38 +254,19 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   // Whether the estimator gives the direct part too, known from its first answer; the points
   // before it are inside solids (E = 0, direct part 0).
   bool answered = false, split = false;
-  if (progress) progress(0, n);
-  std::size_t next = 0;
-  while (next < n) {
-    const std::size_t first = next;
-    outside.clear();
-    outsideAt.clear();
-    inside.clear();
-    onSolid.clear();
-    while (next < n && outside.size() < batchSize) {
-      const std::size_t k = classified(next);
-      const SamplePoint& point = aheadPoints[k];
-      const int in = aheadInside[k];
-      if (in < 0) {
-        outsideAt.push_back(inside.size());
-        outside.push_back(point);
-      }
-      inside.push_back(in);
-      onSolid.push_back(point.solid);
-      ++next;
-      // A run of inside points with nothing waiting for the estimator goes on at once.
-      if (outside.empty() && inside.size() >= batchSize) break;
-    }
+  // The chunk's values into the metrics, then to the sink.
+  const auto finish = [&](const Chunk& chunk, const PointIlluminance& values) {
+    const std::vector<int>& inside = chunk.inside;
+    const std::vector<std::size_t>& outsideAt = chunk.outsideAt;
     e.assign(inside.size(), 0.0);
     direct.assign(split ? inside.size() : 0, 0.0);
     sun.assign(scene.sun ? inside.size() : 0, 0.0);
     sunReflected.assign(scene.sun && split ? inside.size() : 0, 0.0);
-    if (!outside.empty()) {
-      const PointIlluminance values = estimate(outside);
-      if (values.total.size() != outside.size() ||
-          (!values.direct.empty() && values.direct.size() != outside.size()) ||
-          (!values.sun.empty() && values.sun.size() != outside.size()) ||
-          (!values.sunReflected.empty() && values.sunReflected.size() != outside.size()) ||
+    if (!chunk.outside.empty()) {
+      if (values.total.size() != chunk.outside.size() ||
+          (!values.direct.empty() && values.direct.size() != chunk.outside.size()) ||
+          (!values.sun.empty() && values.sun.size() != chunk.outside.size()) ||
+          (!values.sunReflected.empty() && values.sunReflected.size() != chunk.outside.size()) ||
           (answered && split == values.direct.empty())) {
         throw std::logic_error("estimator returned the wrong number of values");
       }
@@ -290,8 +298,25 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     for (std::size_t k = 0; k < sun.size(); ++k) sunSums.add(sun[k], inside[k] >= 0);
     for (std::size_t k = 0; k < e.size(); ++k)
       directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
-    if (sink) sink(GridBatch{first, e, direct, sun, sunReflected, inside, onSolid});
-    if (progress) progress(next, n);
+    if (sink) sink(GridBatch{chunk.first, e, direct, sun, sunReflected, inside, chunk.onSolid});
+    if (progress) progress(chunk.first + inside.size(), n);
+  };
+
+  // A pipeline of two chunks: while the estimator computes one chunk on a thread of its own,
+  // this thread classifies and gathers the next. The estimator sees the same batches in the same
+  // order, one call at a time, and the sink the same chunks in grid order, on this thread.
+  if (progress) progress(0, n);
+  Chunk current, following;
+  gather(current);
+  while (!current.inside.empty()) {
+    std::future<PointIlluminance> values;
+    if (!current.outside.empty())
+      values = std::async(std::launch::async, [&estimate, &current] {
+        return estimate(std::span<const SamplePoint>(current.outside));
+      });
+    gather(following);
+    finish(current, values.valid() ? values.get() : PointIlluminance());
+    std::swap(current, following);
   }
   run.metrics = sums.metrics(grid.spacing);
   if (split) run.directMetrics = directSums.metrics(grid.spacing);

@@ -65,8 +65,13 @@ void Estimator::setScene(const Scene& scene) {
 
 PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
   PointIlluminance e;
-  e.total = engine_ ? evaluateDaylight(*engine_, *scene_, points).illuminance
-                    : daylightReference(*scene_, points);
+  if (!engine_) {
+    e.total = daylightReference(*scene_, points);
+  } else {
+    // Without a sky, E alone: the shadow classes are neither downloaded nor reordered.
+    e.total = scene_->sky ? evaluateDaylight(*engine_, *scene_, points).illuminance
+                          : engine_->illuminance(points);
+  }
   if (skyOnHost(*scene_)) {  // the sky past obstructions outside the room, on the host
     const std::vector<double> sky = skylight(*scene_, points);
     for (std::size_t i = 0; i < sky.size(); ++i) e.total[i] += sky[i];

@@ -1,7 +1,9 @@
 #include "output/grid_rows.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
+#include <iterator>
 
 namespace penumbra {
 
@@ -85,11 +87,26 @@ void GridRows::addPoint(const Vec3& position, const Vec3& normal) {
 }
 
 char* GridRows::writePoint(char* out, const Vec3& position, const Vec3& normal, char separator) {
-  for (const double value :
-       {position.x(), position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
+  out = numbers_.write(out, position.x());
+  *out++ = separator;
+  const std::uint64_t bits[5] = {
+      std::bit_cast<std::uint64_t>(position.y()), std::bit_cast<std::uint64_t>(position.z()),
+      std::bit_cast<std::uint64_t>(normal.x()), std::bit_cast<std::uint64_t>(normal.y()),
+      std::bit_cast<std::uint64_t>(normal.z())};
+  if (tailSize_ > 0 && separator == tailSeparator_ &&
+      std::equal(std::begin(bits), std::end(bits), std::begin(tailBits_))) {
+    std::memcpy(out, tailText_, tailSize_);
+    return out + tailSize_;
+  }
+  char* const tail = out;
+  for (const double value : {position.y(), position.z(), normal.x(), normal.y(), normal.z()}) {
     out = numbers_.write(out, value);
     *out++ = separator;
   }
+  tailSize_ = static_cast<std::size_t>(out - tail);
+  std::memcpy(tailText_, tail, tailSize_);
+  std::copy(std::begin(bits), std::end(bits), std::begin(tailBits_));
+  tailSeparator_ = separator;
   return out;
 }
 

@@ -24,6 +24,7 @@
 // reference; coordinates and normals are host doubles.
 #include <fmt/format.h>
 
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -91,7 +92,13 @@ class GridRows {
 
   NumberDigits illuminanceDigits_;
   NumberTextCache numbers_;  // coordinates and normals repeat from row to row
-  double outdoor_ = 0.0;     // lx: E_h for the daylight factor columns; 0: none
+  // The last point's y, z and normal (their bits) and their text with its separators: along a
+  // row of a planar grid only x changes, so the rest of a point is copied whole.
+  std::uint64_t tailBits_[5] = {};
+  char tailText_[5 * (kMaxNumberText + 1)];
+  std::size_t tailSize_ = 0;  // 0: nothing kept
+  char tailSeparator_ = 0;
+  double outdoor_ = 0.0;  // lx: E_h for the daylight factor columns; 0: none
   bool sunColumn_ = false;
   fmt::memory_buffer csv_, res_, pts_;
 };
