@@ -19,12 +19,12 @@
 #include "illuminance/estimator.hpp"
 #include "output/grid_rows.hpp"
 #include "output/summary_table.hpp"
-#include "radiosity/element_quadrature.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "scene/daylight.hpp"
 #include "scene/scene_loader.hpp"
 #include "scene_errors.hpp"
 #include "test_device.hpp"
+#include "window_sky_quadrature.hpp"
 
 namespace penumbra {
 namespace {
@@ -108,56 +108,11 @@ Scene roomScene(const std::string& model, double transmittance = 1.0) {
                     "daylight.yaml");
 }
 
-// Gauss–Legendre nodes and weights on [a, b].
-struct Rule {
-  std::vector<double> x, w;
-};
-Rule gaussLegendre(int n, double a, double b) {
-  const GaussRule unit = gaussLegendre01(n);
-  Rule r;
-  for (std::size_t k = 0; k < unit.nodes.size(); ++k) {
-    r.x.push_back(a + (b - a) * unit.nodes[k]);
-    r.w.push_back((b - a) * unit.weights[k]);
-  }
-  return r;
-}
-
 // E at P (normal n) from the sky and ground through the window, by the definition
-//   E = ∫ L(ω) (n·ω)⁺ cos θ_s / d² dA
-// over the part of the window's outer rectangle (y = −kWall) that P sees through its room-side
-// rectangle (y = 0): for P in the room the tunnel's walls leave exactly the outer rectangle
-// intersected with the room-side rectangle projected from P onto the outer plane. L is the sky's
-// above z = P.z and the ground's below; the integrand is smooth on each side, so the rectangle is
-// cut at z = P.z and each part takes a 96 × 96-point Gauss–Legendre rule.
+// (window_sky_quadrature.hpp: the part of the outer rectangle P sees through the room-side one).
 double quadratureE(const Sky& sky, double transmittance, const SamplePoint& point) {
-  const Vec3 p = point.position, n = point.normal;
-  const double k = (p.y() + kWall) / p.y();  // the room-side rectangle, projected from P
-  const double x0 = std::max(kX0, p.x() + (kX0 - p.x()) * k);
-  const double x1 = std::min(kX1, p.x() + (kX1 - p.x()) * k);
-  const double z0 = std::max(kZ0, p.z() + (kZ0 - p.z()) * k);
-  const double z1 = std::min(kZ1, p.z() + (kZ1 - p.z()) * k);
-  if (x1 <= x0 || z1 <= z0) return 0.0;
-  const double lz = sky.zenithLuminance(), lg = sky.groundLuminance();
-  const auto luminance = [&](double sinAltitude, bool above) {
-    if (!above) return lg;
-    return sky.model == SkyModel::CieOvercast ? lz * (1.0 + 2.0 * sinAltitude) / 3.0 : lz;
-  };
-  double e = 0.0;
-  const double cuts[] = {z0, std::clamp(p.z(), z0, z1), z1};
-  for (int part = 0; part < 2; ++part) {
-    if (cuts[part + 1] <= cuts[part]) continue;
-    const Rule u = gaussLegendre(96, x0, x1), v = gaussLegendre(96, cuts[part], cuts[part + 1]);
-    for (std::size_t i = 0; i < u.x.size(); ++i)
-      for (std::size_t j = 0; j < v.x.size(); ++j) {
-        const Vec3 d = Vec3(u.x[i], -kWall, v.x[j]) - p;
-        const double r = d.norm();
-        const Vec3 omega = d / r;
-        const double cosReceiver = std::max(0.0, n.dot(omega));
-        const double cosSource = -omega.y();  // the face emits along +y
-        e += u.w[i] * v.w[j] * luminance(omega.z(), part == 1) * cosReceiver * cosSource / (r * r);
-      }
-  }
-  return transmittance * e;
+  return testing::windowSkyQuadrature(sky, {kX0, kX1, kZ0, kZ1, kWall, transmittance},
+                                      point.position, point.normal);
 }
 
 // Points in front of the window, near its edges, below its sill (sky only) and above its head
