@@ -43,13 +43,14 @@ Estimator::Estimator(const EstimatorOptions& options, const Scene& scene) : scen
 void Estimator::solveInterreflection() {
   interreflection_.reset();
   if (withInterreflection_) {
-    HostDirectLight hostSky;
-    if (skyOnHost(*scene_)) {
-      const Scene* scene = scene_;
-      hostSky = [scene](std::span<const SamplePoint> points) { return skylight(*scene, points); };
-    }
+    HostLight host;
+    const Scene* scene = scene_;
+    if (skyOnHost(*scene_))
+      host.sky = [scene](std::span<const SamplePoint> points) { return skylight(*scene, points); };
+    if (scene_->sun)
+      host.sun = [scene](std::span<const SamplePoint> points) { return sunlight(*scene, points); };
     interreflection_ = std::make_unique<Interreflection>(
-        *clDevice_, *scene_, *engine_, mesh_, EngineOptions{culling_}, &transferCache_, hostSky);
+        *clDevice_, *scene_, *engine_, mesh_, EngineOptions{culling_}, &transferCache_, host);
   }
 }
 

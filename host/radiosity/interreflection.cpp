@@ -12,7 +12,6 @@
 #include "engine/daylight_evaluation.hpp"
 #include "geometry/fnv1a_hash.hpp"
 #include "geometry/tolerance.hpp"
-#include "illuminance/sunlight.hpp"
 #include "radiosity/element_transfer.hpp"
 #include "radiosity/sun_on_elements.hpp"
 #include "scene/daylight.hpp"
@@ -25,16 +24,16 @@ namespace {
 // The direct light at every node: E per channel (each source's E split into channels by its
 // colour relative to the colour's luminance, as a source's `color` keeps its photometric
 // luminance; the photometric luminaires white), E per light group, photometric (each Lambertian
-// source alone, then the luminaires together), and the sun's direct light apart: the mesh does
-// not follow the sun, so that a scene's daylight factor is the same with any sun or none.
+// source alone, then the luminaires together, then the host's sky). The sun is left out: the
+// mesh does not follow it, so that a scene's daylight factor is the same with any sun or none,
+// and its light is taken once on the final mesh (Interreflection::finishMesh).
 struct NodeLight {
   Eigen::MatrixX3d direct;  // lx, [node][channel]
   Eigen::MatrixXd byGroup;  // lx, [node][group]
-  Eigen::VectorXd sun;      // lx, [node], white; empty without a sun
 };
 
 NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh,
-                    const HostDirectLight& hostDirect) {
+                    const HostLight& host) {
   // The sources as the engine reports them: the scene's, then its sky's and ground's (white).
   const std::vector<Source> all = daylightScene(scene, 0.0).sources;
   const std::size_t sources = all.size();
@@ -45,16 +44,10 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
   }
   const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
   const bool luminaires = !scene.luminaires.empty();
-  const bool sun = scene.sun.has_value();
-  const bool host = static_cast<bool>(hostDirect);
+  const bool sky = static_cast<bool>(host.sky);
   NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
-                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires + host)),
-                  Eigen::VectorXd::Zero(sun ? n : 0)};
+                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires + sky))};
   if (n == 0) return light;
-  if (sun) {
-    const std::vector<double> e = sunlight(scene, mesh.nodes);
-    light.sun = Eigen::Map<const Eigen::VectorXd>(e.data(), n);
-  }
   const IlluminanceResult result = evaluateDaylight(engine, scene, mesh.nodes, true);
   for (Eigen::Index node = 0; node < n; ++node) {
     for (std::size_t s = 0; s < sources; ++s) {
@@ -68,8 +61,8 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
       light.byGroup(node, static_cast<Eigen::Index>(sources)) = e;
     }
   }
-  if (host) {  // white, one more group after the luminaires
-    const std::vector<double> e = hostDirect(mesh.nodes);
+  if (sky) {  // white, one more group after the luminaires
+    const std::vector<double> e = host.sky(mesh.nodes);
     const auto group = static_cast<Eigen::Index>(sources + luminaires);
     for (Eigen::Index node = 0; node < n; ++node) {
       light.direct.row(node).array() += e[static_cast<std::size_t>(node)];
@@ -155,9 +148,9 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
 Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                  IlluminanceEngine& direct, const MeshOptions& mesh,
                                  const EngineOptions& engine, TransferCache* cache,
-                                 const HostDirectLight& hostDirect) {
+                                 const HostLight& host) {
   if (mesh.linkError > 0.0) {
-    solveHierarchically(device, scene, direct, mesh, engine, cache, hostDirect);
+    solveHierarchically(device, scene, direct, mesh, engine, cache, host);
     return;
   }
   auto start = Clock::now();
@@ -165,7 +158,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
   // the sky face, cut below the scene).
   mesh_ = buildSurfaceMesh(skyFacesScene(scene), mesh);
-  NodeLight light = nodeLight(direct, scene, mesh_, hostDirect);
+  NodeLight light = nodeLight(direct, scene, mesh_, host);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   if (mesh_.elements.size() > mesh.maxElements) {
     // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
@@ -185,9 +178,9 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
                                                    mesh.maxElements, report_.refinementCapped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
-    light = nodeLight(direct, scene, mesh_, hostDirect);
+    light = nodeLight(direct, scene, mesh_, host);
   }
-  finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
+  finishMesh(scene, host, light.direct, mesh.elementSize, start);
 
   if (mesh_.elements.empty()) return;
   const std::uint64_t key = transferFingerprint(scene, mesh_);
@@ -218,7 +211,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
 void Interreflection::solveHierarchically(compute::Device& device, const Scene& scene,
                                           IlluminanceEngine& direct, const MeshOptions& mesh,
                                           const EngineOptions& engine, TransferCache* cache,
-                                          const HostDirectLight& hostDirect) {
+                                          const HostLight& host) {
   auto start = Clock::now();
   // The element trees, their leaves refined where the direct light is uneven, as the dense
   // path refines its elements; no element limit (the links grow about linearly).
@@ -227,7 +220,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
       std::make_unique<ElementTree>(buildElementTree(skyFacesScene(scene), mesh.elementSize));
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   mesh_ = tree->leafMesh(mesh.quadratureOrder);
-  NodeLight light = nodeLight(direct, scene, mesh_, hostDirect);
+  NodeLight light = nodeLight(direct, scene, mesh_, host);
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     bool capped = false;
     const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
@@ -237,9 +230,9 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
       if (split[i]) tree->split(tree->leaves[i], tolerance);
     tree->numberLeaves();
     mesh_ = tree->leafMesh(mesh.quadratureOrder);
-    light = nodeLight(direct, scene, mesh_, hostDirect);
+    light = nodeLight(direct, scene, mesh_, host);
   }
-  finishMesh(scene, light.direct, light.sun, mesh.elementSize, start);
+  finishMesh(scene, host, light.direct, mesh.elementSize, start);
   if (mesh_.elements.empty()) return;
 
   Fnv1a salt;
@@ -280,11 +273,16 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
   report_.solveSeconds = secondsSince(start);
 }
 
-void Interreflection::finishMesh(const Scene& scene, const Eigen::MatrixX3d& nodeDirect,
-                                 const Eigen::VectorXd& nodeSun, double elementSize,
+void Interreflection::finishMesh(const Scene& scene, const HostLight& host,
+                                 const Eigen::MatrixX3d& nodeDirect, double elementSize,
                                  Clock::time_point start) {
   direct_ = elementAverage(mesh_, nodeDirect);
-  sunDirect_ = nodeSun.size() > 0 ? sunElementAverage(scene, mesh_, nodeSun) : Eigen::VectorXd();
+  sunDirect_ = Eigen::VectorXd();
+  if (host.sun && !mesh_.nodes.empty()) {
+    const std::vector<double> e = host.sun(mesh_.nodes);
+    const Eigen::Map<const Eigen::VectorXd> nodeSun(e.data(), static_cast<Eigen::Index>(e.size()));
+    sunDirect_ = sunElementAverage(scene, host.sun, mesh_, nodeSun);
+  }
   report_.elements = mesh_.elements.size();
   report_.elementSize = elementSize;
   report_.nodes = mesh_.nodes.size();

@@ -5,7 +5,7 @@
 // radiosity equations are solved per RGB channel (radiosity_solver), and the indirect E at any
 // point is the kernel's exact integral over every element at its solved luminance (the final
 // gather: no interpolation between points). The sun's direct light on the elements
-// (illuminance/sunlight.hpp) is a right-hand side of its own, solved alone and added, so that
+// (HostLight::sun) is a right-hand side of its own, solved alone and added, so that
 // its part of the indirect E is known (the daylight factor leaves it out); the mesh follows the
 // other light only, so a scene's daylight factor does not depend on its sun. A scene lit by the
 // sun alone (no sky, no sources) has no mesh and its sunlight is not interreflected.
@@ -17,6 +17,7 @@
 
 #include "cl/device.hpp"
 #include "engine/illuminance_engine.hpp"
+#include "radiosity/host_light.hpp"
 #include "radiosity/radiosity_solver.hpp"
 #include "radiosity/surface_mesh.hpp"
 #include "radiosity/transfer_cache.hpp"
@@ -47,20 +48,17 @@ struct InterreflectedIlluminance {
   std::vector<double> fromSun;  // lx, part of total; empty without a sun
 };
 
-// Direct light computed outside the engine: E (lx) at each point.
-using HostDirectLight = std::function<std::vector<double>(std::span<const SamplePoint>)>;
-
 class Interreflection {
  public:
   // Solves the radiosity equations for `scene` (which must outlive this object). `direct`
   // answers for `scene` (its direct illuminance); its device runs the element kernels too.
   // `engine` are the options of the element kernels (the transfer and the gather). With a
   // `cache`, the transfer of a geometry met before is taken from it, a new one is put in it.
-  // `hostDirect`, when given, is more direct light (white, lx at each point) that the engine
-  // does not hold: the sky the host computes past obstructions (illuminance/skylight.hpp).
+  // `host`: direct light the engine does not hold (host_light.hpp), the sky past obstructions
+  // and the sun.
   Interreflection(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
                   const MeshOptions& mesh = {}, const EngineOptions& engine = {},
-                  TransferCache* cache = nullptr, const HostDirectLight& hostDirect = {});
+                  TransferCache* cache = nullptr, const HostLight& host = {});
   ~Interreflection();
 
   // Interreflected E in lx at each point (the photometric sum of the channels), the sun's
@@ -89,14 +87,14 @@ class Interreflection {
   // element j at 1 cd/m²: points × columns, lx.
   Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
   // The element-average direct light and the mesh's part of the report, once the mesh is final.
-  void finishMesh(const Scene& scene, const Eigen::MatrixX3d& nodeDirect,
-                  const Eigen::VectorXd& nodeSun, double elementSize, Clock::time_point start);
+  void finishMesh(const Scene& scene, const HostLight& host, const Eigen::MatrixX3d& nodeDirect,
+                  double elementSize, Clock::time_point start);
   // Keeps the photometric luminance of the sun's solution (solved alone).
   void addSun(const Eigen::MatrixX3d& luminance);
   // The constructor's work with hierarchical links (MeshOptions::linkError > 0).
   void solveHierarchically(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
                            const MeshOptions& mesh, const EngineOptions& engine,
-                           TransferCache* cache, const HostDirectLight& hostDirect);
+                           TransferCache* cache, const HostLight& host);
 
   SurfaceMesh mesh_;
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements

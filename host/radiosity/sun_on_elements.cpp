@@ -3,12 +3,12 @@
 #include <vector>
 
 #include "geometry/tolerance.hpp"
-#include "illuminance/sunlight.hpp"
 
 namespace penumbra {
 
-Eigen::VectorXd sunElementAverage(const Scene& scene, const SurfaceMesh& mesh,
-                                  const Eigen::VectorXd& nodeSun, int cellsPerSide) {
+Eigen::VectorXd sunElementAverage(const Scene& scene, const HostDirectLight& sun,
+                                  const SurfaceMesh& mesh, const Eigen::VectorXd& nodeSun,
+                                  int cellsPerSide) {
   const auto elements = static_cast<Eigen::Index>(mesh.elements.size());
   Eigen::VectorXd average = Eigen::VectorXd::Zero(elements);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
@@ -36,7 +36,7 @@ Eigen::VectorXd sunElementAverage(const Scene& scene, const SurfaceMesh& mesh,
     }
     average[i] = 0.0;
   }
-  const std::vector<double> e = sunlight(scene, centres);
+  const std::vector<double> e = sun(centres);
   for (std::size_t k = 0; k < e.size(); ++k) average[owner[k]] += weights[k] * e[k];
   return average;
 }

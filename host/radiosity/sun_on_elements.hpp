@@ -7,6 +7,7 @@
 // the part of the element the edge crosses.
 #include <Eigen/Core>
 
+#include "radiosity/host_light.hpp"
 #include "radiosity/surface_mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -14,9 +15,10 @@ namespace penumbra {
 
 inline constexpr int kSunCellsPerSide = 32;
 
-// lx per element; `nodeSun` the direct sunlight at the mesh's nodes (sunlight.hpp).
-Eigen::VectorXd sunElementAverage(const Scene& scene, const SurfaceMesh& mesh,
-                                  const Eigen::VectorXd& nodeSun,
+// lx per element; `sun` the sun's direct light at points (HostLight::sun), `nodeSun` its values at
+// the mesh's nodes.
+Eigen::VectorXd sunElementAverage(const Scene& scene, const HostDirectLight& sun,
+                                  const SurfaceMesh& mesh, const Eigen::VectorXd& nodeSun,
                                   int cellsPerSide = kSunCellsPerSide);
 
 }  // namespace penumbra
