@@ -291,7 +291,8 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   const std::size_t outValues = linked     ? links * PN_LANES
                                 : bySource ? padded * std::max(sourceCount, 1)
                                            : padded;
-  const std::size_t classBytes = padded * std::max(sourceCount, 1);
+  // A linked launch writes no classes (kernels/illuminance.cl): one byte keeps the argument.
+  const std::size_t classBytes = linked ? 1 : padded * std::max(sourceCount, 1);
   std::vector<std::size_t> batch(kPointArrays, padded * sizeof(float));
   batch.insert(batch.end(), {padded * sizeof(cl_int), compute::byteSize(table.entries),
                              compute::byteSize(table.candidates), compute::byteSize(linkStart),

@@ -46,14 +46,14 @@ GaussRule edgeGraded(const GaussRule& gauss) {
   return rule;
 }
 
+}  // namespace
+
 bool isParallelogram(const ConvexPolygon& polygon) {
   if (polygon.size() != 4) return false;
   const auto& v = polygon.vertices();
   const double scale = (v[2] - v[0]).norm() + (v[3] - v[1]).norm();
   return ((v[1] - v[0]) - (v[2] - v[3])).norm() <= 1e-12 * scale;
 }
-
-}  // namespace
 
 std::vector<QuadratureNode> elementQuadrature(const ConvexPolygon& element, int order) {
   const GaussRule rule = edgeGraded(gaussLegendre01(order));

@@ -20,6 +20,9 @@ struct QuadratureNode {
 // triangle of its fan. order >= 1.
 std::vector<QuadratureNode> elementQuadrature(const ConvexPolygon& element, int order);
 
+// Whether `polygon` is a parallelogram (opposite edges equal to 1e-12 of its diagonals).
+bool isParallelogram(const ConvexPolygon& polygon);
+
 // Gauss-Legendre nodes and weights on [0, 1] (weights sum to 1).
 struct GaussRule {
   std::vector<double> nodes, weights;

@@ -1,6 +1,14 @@
 #include "radiosity/element_transfer.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <cmath>
+
+#include "geometry/tolerance.hpp"
+#include "kernels/shared_types.h"
+#include "radiosity/element_ball.hpp"
+#include "radiosity/element_quadrature.hpp"
 
 namespace penumbra {
 
@@ -47,6 +55,183 @@ Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& me
       }
     }
     first = last;
+  }
+  return t;
+}
+
+namespace {
+
+// About 2^22 point·element values (16 MB of float) per launch.
+constexpr std::size_t kTransferBatchValues = std::size_t{1} << 22;
+
+// Each receiver's near senders under `rule`, in increasing order: the elements it can exchange
+// light with that are not far.
+std::vector<std::vector<int>> nearSenders(const SurfaceMesh& mesh, const FarFieldRule& rule) {
+  const std::size_t n = mesh.elements.size();
+  std::vector<Ball> balls(n);
+  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
+  for (std::size_t i = 0; i < n; ++i) {
+    balls[i] = ballOf(mesh.elements[i].polygon);
+    lo = lo.cwiseMin(balls[i].centre - Vec3::Constant(balls[i].radius));
+    hi = hi.cwiseMax(balls[i].centre + Vec3::Constant(balls[i].radius));
+  }
+  const double tolerance = Tolerance::forSceneSize((hi - lo).norm()).length;
+  std::vector<std::vector<int>> near(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    const double diameter = 2.0 * balls[i].radius;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double gap = ballGap(balls[i], balls[j]);
+      const bool far = gap > 0.0 && (diameter / gap) * (diameter / gap) <= rule.farRatio;
+      if (j != i && !far &&
+          canExchange(mesh.elements[i].polygon, mesh.elements[j].polygon, tolerance))
+        near[i].push_back(static_cast<int>(j));
+    }
+  });
+  return near;
+}
+
+// The points where a receiver takes its far senders: on a parallelogram the 2 × 2
+// Gauss-Legendre points (exact for a light that is cubic along each side), on any other polygon
+// its centroid; equal weights.
+std::vector<SamplePoint> farPoints(const SurfaceElement& element) {
+  const ConvexPolygon& polygon = element.polygon;
+  const Vec3 normal = polygon.normal();
+  if (!isParallelogram(polygon)) return {SamplePoint{polygon.centroid(), normal, element.solid}};
+  const GaussRule gauss = gaussLegendre01(2);
+  const std::vector<Vec3>& v = polygon.vertices();
+  std::vector<SamplePoint> points;
+  for (double a : gauss.nodes)
+    for (double b : gauss.nodes)
+      points.push_back(
+          SamplePoint{v[0] + a * (v[1] - v[0]) + b * (v[3] - v[0]), normal, element.solid});
+  return points;
+}
+
+// t(i, j) = the mean of E from element j over element i's far points (farPoints), lx per
+// cd/m², every pair.
+void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, Eigen::MatrixXd& t) {
+  const std::size_t n = mesh.elements.size();
+  std::vector<SamplePoint> points;
+  std::vector<std::size_t> start = {0};
+  for (const SurfaceElement& element : mesh.elements) {
+    const std::vector<SamplePoint> own = farPoints(element);
+    points.insert(points.end(), own.begin(), own.end());
+    start.push_back(points.size());
+  }
+  std::size_t first = 0;
+  while (first < n) {
+    std::size_t last = first + 1;
+    while (last < n && (start[last + 1] - start[first]) * n <= kTransferBatchValues) ++last;
+    const std::size_t begin = start[first], end = start[last];
+    std::size_t stride = 0;
+    const std::vector<float> e = engine.illuminanceBySource(
+        std::span<const SamplePoint>(points).subspan(begin, end - begin), stride);
+    for (std::size_t j = 0; j < n; ++j) {
+      const float* row = e.data() + j * stride;
+      for (std::size_t i = first; i < last; ++i) {
+        double sum = 0.0;
+        for (std::size_t k = start[i]; k < start[i + 1]; ++k) sum += row[k - begin];
+        t(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+            sum / static_cast<double>(start[i + 1] - start[i]);
+      }
+    }
+    first = last;
+  }
+}
+
+// The node average over receiver i of E from each of senders[i] (the receivers in `receivers`),
+// by the kernel's linked launch: the same floats as illuminanceBySource, so the same sums as
+// elementTransfer's for those pairs. values[i][k] for sender senders[i][k].
+std::vector<std::vector<double>> nodeAverages(IlluminanceEngine& engine, const SurfaceMesh& mesh,
+                                              const std::vector<std::vector<int>>& senders,
+                                              const std::vector<std::size_t>& receivers) {
+  std::vector<std::vector<double>> values(mesh.elements.size());
+  std::vector<SamplePoint> points;
+  std::vector<double> weights;
+  std::vector<cl_int> start = {0}, faces, owner;
+  const auto flush = [&] {
+    if (faces.empty()) return;
+    const std::vector<float> e = engine.linkedIlluminance(points, start, faces, nullptr, owner);
+    for (std::size_t w = 0; w + 1 < start.size(); ++w) {
+      const auto i = static_cast<std::size_t>(owner[w]);
+      for (cl_int k = start[w]; k < start[w + 1]; ++k) {
+        double sum = 0.0;
+        for (std::size_t lane = 0; lane < PN_LANES; ++lane)
+          sum += weights[w * PN_LANES + lane] * e[static_cast<std::size_t>(k) * PN_LANES + lane];
+        values[i][static_cast<std::size_t>(k - start[w])] += sum;
+      }
+    }
+    points.clear(), weights.clear(), start.assign(1, 0), faces.clear(), owner.clear();
+  };
+  for (std::size_t i : receivers) {
+    values[i].assign(senders[i].size(), 0.0);
+    if (senders[i].empty()) continue;
+    const std::size_t first = mesh.nodeStart[i], count = mesh.nodeStart[i + 1] - first;
+    const std::size_t items = (count + PN_LANES - 1) / PN_LANES;
+    if ((faces.size() + items * senders[i].size()) * PN_LANES > kTransferBatchValues) flush();
+    // Work-items of PN_LANES nodes, the last padded with the last node at weight 0.
+    for (std::size_t k = 0; k < items * PN_LANES; ++k) {
+      points.push_back(mesh.nodes[first + std::min(k, count - 1)]);
+      weights.push_back(k < count ? mesh.weights[first + k] : 0.0);
+    }
+    for (std::size_t w = 0; w < items; ++w) {
+      faces.insert(faces.end(), senders[i].begin(), senders[i].end());
+      start.push_back(static_cast<cl_int>(faces.size()));
+      owner.push_back(static_cast<cl_int>(i));
+    }
+  }
+  flush();
+  return values;
+}
+
+}  // namespace
+
+Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
+                                const FarFieldRule& rule) {
+  if (!(rule.farRatio > 0.0)) return elementTransfer(engine, mesh);
+  const std::size_t n = mesh.elements.size();
+  Eigen::MatrixXd t =
+      Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  if (n == 0) return t;
+  farPointTransfer(engine, mesh, t);
+  std::vector<std::vector<int>> near = nearSenders(mesh, rule);
+  std::vector<std::size_t> all(n);
+  for (std::size_t i = 0; i < n; ++i) all[i] = i;
+  std::vector<std::vector<double>> averages = nodeAverages(engine, mesh, near, all);
+
+  // Per receiver: the near senders' node averages in place of their far-point values, and the
+  // far ones scaled so that the row keeps its sum over the far points.
+  std::vector<std::size_t> again;
+  std::vector<std::vector<int>> every(n);
+  std::vector<char> isNear(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<Eigen::Index>(i);
+    double nearAtFarPoints = 0.0, nearAverage = 0.0, farAtFarPoints = 0.0;
+    for (std::size_t k = 0; k < near[i].size(); ++k) {
+      isNear[static_cast<std::size_t>(near[i][k])] = 1;
+      nearAtFarPoints += t(row, near[i][k]);
+      nearAverage += averages[i][k];
+    }
+    for (std::size_t j = 0; j < n; ++j)
+      if (!isNear[j]) farAtFarPoints += t(row, static_cast<Eigen::Index>(j));
+    for (int j : near[i]) isNear[static_cast<std::size_t>(j)] = 0;
+    if (farAtFarPoints > 0.0) {
+      // The far field's node average: the row's far-point sum less the near field's average.
+      const double factor = (farAtFarPoints + nearAtFarPoints - nearAverage) / farAtFarPoints;
+      if (!(factor >= 0.5 && factor <= 2.0)) {
+        again.push_back(i);
+        for (std::size_t j = 0; j < n; ++j) every[i].push_back(static_cast<int>(j));
+        continue;
+      }
+      t.row(row) *= factor;
+    }
+    for (std::size_t k = 0; k < near[i].size(); ++k) t(row, near[i][k]) = averages[i][k];
+  }
+  if (!again.empty()) {
+    averages = nodeAverages(engine, mesh, every, again);
+    for (std::size_t i : again)
+      for (std::size_t j = 0; j < n; ++j)
+        t(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = averages[i][j];
   }
   return t;
 }

@@ -21,4 +21,24 @@ Scene elementScene(const Scene& scene, const SurfaceMesh& mesh);
 // and in a closed room every row sums to π (each node sees a whole hemisphere of elements).
 Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh);
 
+// Which senders of a receiving element are far: those whose bounding ball lies a gap g from the
+// receiver's, of diameter d, with (d/g)² ≤ `farRatio`. Their light varies across the receiver
+// by about d/g of itself, and its mean over the receiver differs from its value at the
+// centroid by about (d/g)² of it.
+struct FarFieldRule {
+  double farRatio = 0.03;
+};
+
+// elementTransfer's matrix with the far senders of each receiver taken at its centroid: the
+// near senders (and the pairs where the rule is off, farRatio 0) are averaged over the
+// receiver's nodes as above; the far ones' values at the centroid are scaled by one factor per
+// receiver so that the row sums to the sum of all senders at the centroid. The row sum is what
+// the energy balance hangs on: in a closed room it is π at every point, and it is kept exactly;
+// the far field's share of the node average, which is the whole hemisphere less the near
+// field's share, is spread over the far senders in proportion to their centroid values.
+// A receiver whose factor would leave [0.5, 2] (a far field too weak against the near field's
+// change across the receiver) has all its senders averaged over its nodes.
+Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
+                                const FarFieldRule& rule);
+
 }  // namespace penumbra

@@ -10,6 +10,7 @@
 #include "geometry/morton_order.hpp"
 #include "geometry/tolerance.hpp"
 #include "kernels/shared_types.h"
+#include "radiosity/element_ball.hpp"
 #include "radiosity/element_quadrature.hpp"
 #include "radiosity/element_transfer.hpp"
 
@@ -18,19 +19,6 @@ namespace penumbra {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-// A node or a group of points as the link oracle sees it: a ball (centre, radius) and a size.
-struct Ball {
-  Vec3 centre = Vec3::Zero();
-  double radius = 0.0;
-};
-
-Ball ballOf(const ConvexPolygon& polygon) {
-  Ball ball{polygon.centroid(), 0.0};
-  for (const Vec3& v : polygon.vertices())
-    ball.radius = std::max(ball.radius, (v - ball.centre).norm());
-  return ball;
-}
 
 // The link's error bound (HierarchyOptions::linkError) between a receiver in ball `p` of size
 // `pSize` and the sending node `q`: infinite where the balls meet.

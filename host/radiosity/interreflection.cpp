@@ -138,7 +138,7 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
   auto geometry = std::make_shared<GeometryTransfer>();
   geometry->elements = elementScene(scene, mesh);
   geometry->gather = std::make_unique<IlluminanceEngine>(device, geometry->elements, engine);
-  geometry->transfer = elementTransfer(*geometry->gather, mesh);
+  geometry->transfer = elementTransfer(*geometry->gather, mesh, FarFieldRule{});
   geometry->seconds = secondsSince(start);
   return geometry;
 }
