@@ -23,21 +23,22 @@ Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& me
 
 // Which senders of a receiving element are far: those whose bounding ball lies a gap g from the
 // receiver's, of diameter d, with (d/g)² ≤ `farRatio`. Their light varies across the receiver
-// by about d/g of itself, and its mean over the receiver differs from its value at the
-// centroid by about (d/g)² of it.
+// by about d/g of itself, and a 2 × 2 Gauss-Legendre rule averages it to about (d/g)⁴ of it.
+// 0.1 holds a furnished closed room's energy balance as well as every sender at the nodes does
+// (docs/method.md, "Far senders").
 struct FarFieldRule {
-  double farRatio = 0.03;
+  double farRatio = 0.1;
 };
 
-// elementTransfer's matrix with the far senders of each receiver taken at its centroid: the
-// near senders (and the pairs where the rule is off, farRatio 0) are averaged over the
-// receiver's nodes as above; the far ones' values at the centroid are scaled by one factor per
-// receiver so that the row sums to the sum of all senders at the centroid. The row sum is what
-// the energy balance hangs on: in a closed room it is π at every point, and it is kept exactly;
-// the far field's share of the node average, which is the whole hemisphere less the near
-// field's share, is spread over the far senders in proportion to their centroid values.
-// A receiver whose factor would leave [0.5, 2] (a far field too weak against the near field's
-// change across the receiver) has all its senders averaged over its nodes.
+// elementTransfer's matrix with the far senders of each receiver taken at its four far points
+// (2 × 2 Gauss-Legendre points on a parallelogram, else the centroid): the near senders (every
+// sender where farRatio is 0) are averaged over the receiver's nodes as above; the far ones'
+// values are scaled by one factor per receiver so that the row sums to the mean over the far
+// points of all senders. The row sum is what the energy balance hangs on: in a closed room it is
+// π at every point, and it is kept exactly; the far field's share of the node average, the
+// whole hemisphere less the near field's share, is spread over the far senders in proportion to
+// their values. A receiver whose factor would leave [0.5, 2] (a far field too weak against the
+// near field's change across the receiver) has all its senders averaged over its nodes.
 Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
                                 const FarFieldRule& rule);
 
