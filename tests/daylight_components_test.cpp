@@ -163,6 +163,7 @@ TEST(DaylightComponents, AddUpToDfAndSplitTheDirectLightIntoSkyAndGround) {
   Sky skyAlone = *scene.sky;
   skyAlone.groundReflectance = 0.0;
   const testing::WallWindow window{2.0, 4.0, 0.9, 2.4, 0.2, 1.0};
+  double worstSky = 0.0, worstGround = 0.0, worstSum = 0.0;
   for (std::size_t i = 0; i < df.size(); ++i) {
     const Vec3 p(x[i], y[i], z[i]), n = -Vec3::UnitY();
     const double sky = testing::windowSkyQuadrature(skyAlone, window, p, n) / 100.0;
@@ -173,7 +174,13 @@ TEST(DaylightComponents, AddUpToDfAndSplitTheDirectLightIntoSkyAndGround) {
     // The kernel's float sums: SC is the run's direct light less its ground sources'.
     EXPECT_NEAR(sc[i], sky, 1e-5 * (sky + ground)) << p.transpose();
     EXPECT_NEAR(erc[i], ground, 1e-5 * (sky + ground)) << p.transpose();
+    worstSky = std::max(worstSky, std::abs(sc[i] - sky) / (sky + ground));
+    worstGround = std::max(worstGround, std::abs(erc[i] - ground) / (sky + ground));
+    worstSum = std::max(worstSum, std::abs(sc[i] + erc[i] + irc[i] - df[i]) / df[i]);
   }
+  std::printf(
+      "  SC within %.2e, ERC within %.2e of the quadrature; SC + ERC + IRC = DF within %.1e\n",
+      worstSky, worstGround, worstSum);
   const nlohmann::json d = nlohmann::json::parse(
       readText(dir.path() / "out/summary.json"))["grids"][0]["daylight_factor"];
   double scMean = 0.0, ercMean = 0.0;

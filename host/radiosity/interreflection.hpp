@@ -9,8 +9,8 @@
 // ground and the sun in front of them (HostLight); their light enters through the openings'
 // glazing at its transmittance τ, so their luminance is solved as the room sees it, τ times their
 // own, by scaling their direct light: exact for what they send into the room and exchange among
-// themselves; the light the room sends out to them counts τ⁻² times too much, a term of the order
-// of the room's exitance through its openings over their daylight. The sun's direct light on the
+// themselves; the light the room sends out to them counts τ⁻² times too much (none at τ = 1),
+// a term small beside the sky and ground their faces see. The sun's direct light on the
 // elements
 // (HostLight::sun) is a right-hand side of its own, solved alone and added, so that
 // its part of the indirect E is known (the daylight factor leaves it out); the mesh follows the
