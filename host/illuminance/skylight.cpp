@@ -128,20 +128,29 @@ double openSky(const SkyContext& context, const SamplePoint& point) {
 }  // namespace
 
 std::vector<double> surfaceSkylight(const Scene& scene, std::span<const SamplePoint> points) {
-  std::vector<double> e = skylight(scene, points);
-  if (!scene.sky || !scene.room) return e;
+  if (!scene.sky || !scene.room) return skylight(scene, points);
   SkyContext context{scene, *scene.sky, Tolerance::forSceneSize(scene.size()).length,
                      FarPlacement::of(scene)};
+  // The points inside the room through the openings, together; those outside one by one.
+  std::vector<SamplePoint> inside;
+  std::vector<std::size_t> insideAt, outsideAt;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const bool outside = outsideRoom(*scene.room, points[i].position, context.tolerance);
+    if (!outside) inside.push_back(points[i]);
+    (outside ? outsideAt : insideAt).push_back(i);
+  }
+  std::vector<double> e(points.size(), 0.0);
+  const std::vector<double> throughOpenings = skylight(scene, inside);
+  for (std::size_t k = 0; k < insideAt.size(); ++k) e[insideAt[k]] = throughOpenings[k];
   std::optional<PatchSky> patches;
-  if (scene.sky->model == SkyModel::CieGeneral) {
+  if (scene.sky->model == SkyModel::CieGeneral && !outsideAt.empty()) {
     patches = cieGeneralSky(*scene.sky, scene.sun ? scene.sun->direction : Vec3(Vec3::UnitZ()));
     context.patches = &*patches;
   }
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 8),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, outsideAt.size(), 8),
                     [&](const tbb::blocked_range<std::size_t>& r) {
-                      for (std::size_t i = r.begin(); i < r.end(); ++i)
-                        if (outsideRoom(*scene.room, points[i].position, context.tolerance))
-                          e[i] = openSky(context, points[i]);
+                      for (std::size_t k = r.begin(); k < r.end(); ++k)
+                        e[outsideAt[k]] = openSky(context, points[outsideAt[k]]);
                     });
   return e;
 }
