@@ -39,18 +39,18 @@
  *                                   + Σ_{j>=1} F_j ((n·m) c_j/(j+2) − (w·n)(w·m) W_j)],
  * W_j = Σ c_k/(k+2) over 1 <= k <= j of j's parity: every part now shrinks with g^j over the
  * arc, the Δψ part being Lambert's kind (one rounding of an arc's angle). The F_j are taken
- * backward from j = K + PN_MOMENT_TAIL (F = 0 there), F_{j−2} = (j F_j + [f^{j−1} f′]_0^Θ) /
- * ((j − 1) r²), which damps the start's error by (g_max / r)² a step, where the arc misses its
- * circle's peak by g_max <= PN_MOMENT_BACKWARD_RATIO r; forward, as above, where the arc holds the
- * peak or nearly (g nearly r all along it) and r <= PN_MOMENT_BACKWARD_RATIO; the sum over j is
- * cut at K + PN_MOMENT_TAIL, where g_max^PN_MOMENT_TAIL < 1.5e-8. Arcs near the axis (r and
- * g_max near 1, where the beam dominates E) keep the recurrences above. Each way gives each
- * arc's own exact term, so the arcs of one region may take different ways. */
+ * backward from F = 0 beyond the order, F_{j−2} = (j F_j + [f^{j−1} f′]_0^Θ) / ((j − 1) r²),
+ * which damps the start's error by (g_max / r)² a step, where the arc misses its circle's peak
+ * by g_max <= PN_MOMENT_RATIO r (the bracket as x^{j−1} (expm1((j − 1) log1p((f(Θ) − x) / x))
+ * f′(Θ) + f′(Θ) − y), without cancellation); forward, as above, where the arc holds the peak or
+ * nearly and r <= PN_MOMENT_RATIO. The sum over j is cut where that ratio (g_max / r, or r, each
+ * at least g_max) to the power beyond the order is PN_MOMENT_CUT, at most PN_MOMENT_MAX_TAIL
+ * powers beyond (the lanes' largest need: an arc far off the axis needs a few dozen). Arcs near
+ * the axis (both ratios above PN_MOMENT_RATIO, where the beam dominates E) keep the recurrences
+ * above. Each way gives the arc's own exact term, so the arcs of one region may mix them. */
 
 #include "prelude.cl"
 
-/* How a face emits, read once per face: order −1 for a uniform luminance (Lambert's term), else
- * the polynomial's order, its axis w and its coefficients. */
 #define PN_MOMENT_DIRECT_ORDER 12 /* the highest order without the azimuth form */
 #define PN_MOMENT_RATIO 0.97f     /* the largest g_max / r (backward) or r (forward) taken */
 #define PN_MOMENT_CUT 1.0e-8f     /* the ratio's power where the powers are cut off */
@@ -65,6 +65,9 @@ inline float __attribute__((overloadable)) pn_lane_max(float8 v) {
   float2 b = fmax(a.lo, a.hi);
   return fmax(b.x, b.y);
 }
+
+/* How a face emits, read once per face: order −1 for a uniform luminance (Lambert's term), else
+ * the polynomial's order, its axis w and its coefficients. */
 typedef struct {
   int order;
   float wx, wy, wz;
@@ -94,71 +97,71 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
 /* The azimuth form of one arc's term (above) where it is the more accurate, else `direct`, the
  * term by the recurrences of F_k and τ_k. x, y, r2, f_end = f(Θ), slope_end = f′(Θ), delta =
  * f(Θ) − x and delta_slope = f′(Θ) − y as moment_term computes them; c = b × a. */
-#define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                 \
-  inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,            \
-                           T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,         \
-                           T cx, T cy, T cz, const PnEmission* em) {                                    \
-    const float wx = em->wx, wy = em->wy, wz = em->wz;                                                  \
-    const int order = em->order;                                                                        \
-    const float far_even = em->tail[order - (order & 1)],                                               \
-                far_odd = em->tail[order - 1 + (order & 1)];                                            \
-    const float beyond = em->tail[order] + em->tail[order - 1]; /* Σ_{k>=1} c_k/(k+2) */               \
-    T r = sqrt(r2), g_max = fmax(x, f_end);                                                             \
-    M holds_peak = (y > 0.0f) & (slope_end < 0.0f);                                                     \
-    M backward = !holds_peak & (g_max <= PN_MOMENT_RATIO * r) & (x > 0.0f) & (f_end > 0.0f);            \
-    M forward = !backward & (r <= PN_MOMENT_RATIO);                                                     \
-    if (!pn_any(backward | forward)) return direct;                                                     \
-    /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,           \
-     * both bounding g_max) to that power is PN_MOMENT_CUT. */                                          \
-    T ratio = select(select((T)(0.0f), r, forward), g_max / r, backward);                               \
-    T need = log(PN_MOMENT_CUT) / log(fmax(ratio, 1e-3f));                                              \
-    const int last = order + 2 + (int)fmin(pn_lane_max(need), (float)PN_MOMENT_MAX_TAIL);               \
-    /* Δψ = atan2(w·(b × a)... ) of the projections (w × a), (w × b): the azimuth from a to b. */ \
-    T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                        \
-    T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                        \
-    T dpsi = atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);                     \
-    T wnm = wn * wm;                                                                                    \
-    /* Forward: F_j for j = 1..last, as moment_term. */                                                 \
-    T ahead = 0.0f;                                                                                     \
-    if (pn_any(forward)) {                                                                              \
-      T f_prev = theta, f_prev2 = 0.0f, d = 0.0f, xp = 1.0f;                                            \
-      for (int j = 1; j <= last; ++j) {                                                                 \
-        const float jf = (float)j;                                                                      \
-        T f_j = ((jf - 1.0f) * r2 * f_prev2 - (d * slope_end + xp * delta_slope)) / jf;                 \
-        const float cj = j <= order ? em->c[j] / (jf + 2.0f) : 0.0f;                                    \
-        const float wj = j <= order ? em->tail[j] : ((j & 1) ? far_odd : far_even);                     \
-        ahead += f_j * (nm * cj - wnm * wj);                                                            \
-        d = f_end * d + xp * delta;                                                                     \
-        xp *= x;                                                                                        \
-        f_prev2 = f_prev;                                                                               \
-        f_prev = f_j;                                                                                   \
-      }                                                                                                 \
-    }                                                                                                   \
-    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last and last − 1. */               \
-    T behind = 0.0f;                                                                                    \
-    if (pn_any(backward)) {                                                                             \
-      T f_hi = 0.0f, f_lo = 0.0f; /* F_j, F_{j−1} */                                                  \
-      T inverse_r2 = 1.0f / r2;                                                                         \
-      T log_ratio =                                                                                     \
-          log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */    \
-      for (int j = last; j >= 3; --j) {                                                                 \
-        const float jf = (float)j;                                                                      \
-        T bracket =                                                                                     \
-            pown(x, (M)(j - 1)) * (expm1((jf - 1.0f) * log_ratio) * slope_end + delta_slope);           \
-        T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                      \
-        const int i = j - 2;                                                                            \
-        const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                              \
-        const float wi = i <= order ? em->tail[i] : ((i & 1) ? far_odd : far_even);                     \
-        behind += f_j2 * (nm * ci - wnm * wi);                                                          \
-        f_hi = f_lo;                                                                                    \
-        f_lo = f_j2;                                                                                    \
-      }                                                                                                 \
-      /* behind holds j − 2 = 1..last − 2; the two highest powers, whose F start at 0, are the      \
-       * cut-off's. */                                                                                  \
-    }                                                                                                   \
-    T azimuth =                                                                                         \
-        em->c[0] * theta * nm + 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));          \
-    return select(direct, azimuth, backward | forward);                                                 \
+#define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                  \
+  inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,             \
+                           T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,          \
+                           T cx, T cy, T cz, const PnEmission* em) {                                     \
+    const float wx = em->wx, wy = em->wy, wz = em->wz;                                                   \
+    const int order = em->order;                                                                         \
+    const float far_even = em->tail[order - (order & 1)],                                                \
+                far_odd = em->tail[order - 1 + (order & 1)];                                             \
+    const float beyond = em->tail[order] + em->tail[order - 1]; /* Σ_{k>=1} c_k/(k+2) */                \
+    T r = sqrt(r2), g_max = fmax(x, f_end);                                                              \
+    M holds_peak = (y > 0.0f) & (slope_end < 0.0f);                                                      \
+    M backward = !holds_peak & (g_max <= PN_MOMENT_RATIO * r) & (x > 0.0f) & (f_end > 0.0f);             \
+    M forward = !backward & (r <= PN_MOMENT_RATIO);                                                      \
+    if (!pn_any(backward | forward)) return direct;                                                      \
+    /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,            \
+     * both bounding g_max) to that power is PN_MOMENT_CUT. */                                           \
+    T ratio = select(select((T)(0.0f), r, forward), g_max / r, backward);                                \
+    T need = log(PN_MOMENT_CUT) / log(fmax(ratio, 1e-3f));                                               \
+    const int last = order + 2 + (int)fmin(pn_lane_max(need), (float)PN_MOMENT_MAX_TAIL);                \
+    /* Δψ, the azimuth from a to b about w: the angle from w × a to w × b, signed by w·(b × a). */ \
+    T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                         \
+    T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                         \
+    T dpsi = atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);                      \
+    T wnm = wn * wm;                                                                                     \
+    /* Forward: F_j for j = 1..last, as moment_term. */                                                  \
+    T ahead = 0.0f;                                                                                      \
+    if (pn_any(forward)) {                                                                               \
+      T f_prev = theta, f_prev2 = 0.0f, d = 0.0f, xp = 1.0f;                                             \
+      for (int j = 1; j <= last; ++j) {                                                                  \
+        const float jf = (float)j;                                                                       \
+        T f_j = ((jf - 1.0f) * r2 * f_prev2 - (d * slope_end + xp * delta_slope)) / jf;                  \
+        const float cj = j <= order ? em->c[j] / (jf + 2.0f) : 0.0f;                                     \
+        const float wj = j <= order ? em->tail[j] : ((j & 1) ? far_odd : far_even);                      \
+        ahead += f_j * (nm * cj - wnm * wj);                                                             \
+        d = f_end * d + xp * delta;                                                                      \
+        xp *= x;                                                                                         \
+        f_prev2 = f_prev;                                                                                \
+        f_prev = f_j;                                                                                    \
+      }                                                                                                  \
+    }                                                                                                    \
+    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last and last − 1. */                \
+    T behind = 0.0f;                                                                                     \
+    if (pn_any(backward)) {                                                                              \
+      T f_hi = 0.0f, f_lo = 0.0f; /* F_j, F_{j−1} */                                                   \
+      T inverse_r2 = 1.0f / r2;                                                                          \
+      T log_ratio =                                                                                      \
+          log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
+      for (int j = last; j >= 3; --j) {                                                                  \
+        const float jf = (float)j;                                                                       \
+        T bracket =                                                                                      \
+            pown(x, (M)(j - 1)) * (expm1((jf - 1.0f) * log_ratio) * slope_end + delta_slope);            \
+        T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                       \
+        const int i = j - 2;                                                                             \
+        const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                               \
+        const float wi = i <= order ? em->tail[i] : ((i & 1) ? far_odd : far_even);                      \
+        behind += f_j2 * (nm * ci - wnm * wi);                                                           \
+        f_hi = f_lo;                                                                                     \
+        f_lo = f_j2;                                                                                     \
+      }                                                                                                  \
+      /* behind holds j − 2 = 1..last − 2; the two highest powers, whose F start at 0, are the       \
+       * cut-off's. */                                                                                   \
+    }                                                                                                    \
+    T azimuth =                                                                                          \
+        em->c[0] * theta * nm + 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));           \
+    return select(direct, azimuth, backward | forward);                                                  \
   }
 PN_DEFINE_AZIMUTH_FORM(float, int, 1)
 PN_DEFINE_AZIMUTH_FORM(float8, int8, 8)
