@@ -55,6 +55,7 @@
 #define PN_MOMENT_RATIO 0.97f     /* the largest g_max / r (backward) or r (forward) taken */
 #define PN_MOMENT_CUT 1.0e-8f     /* the ratio's power where the powers are cut off */
 #define PN_MOMENT_MAX_TAIL 640    /* ln(PN_MOMENT_CUT) / ln(PN_MOMENT_RATIO) = 605 */
+#define PN_MOMENT_EXACT_EVERY 8   /* steps between exact powers in the backward sweep (2^n) */
 
 /* The largest of the lanes. */
 inline float __attribute__((overloadable)) pn_lane_max(float v) {
@@ -144,10 +145,15 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
       T inverse_r2 = 1.0f / r2;                                                                          \
       T log_ratio =                                                                                      \
           log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
+      T power = 0.0f, excess = 0.0f; /* x^{j−1}, (f(Θ)/x)^{j−1} − 1 */                            \
+      T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);          \
       for (int j = last; j >= 3; --j) {                                                                  \
         const float jf = (float)j;                                                                       \
-        T bracket =                                                                                      \
-            pown(x, (M)(j - 1)) * (expm1((jf - 1.0f) * log_ratio) * slope_end + delta_slope);            \
+        if (((last - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                           \
+          power = pown(x, (M)(j - 1));                                                                   \
+          excess = expm1((jf - 1.0f) * log_ratio);                                                       \
+        }                                                                                                \
+        T bracket = power * (excess * slope_end + delta_slope);                                          \
         T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                       \
         const int i = j - 2;                                                                             \
         const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                               \
@@ -155,6 +161,9 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
         behind += f_j2 * (nm * ci - wnm * wi);                                                           \
         f_hi = f_lo;                                                                                     \
         f_lo = f_j2;                                                                                     \
+        power *= inverse_x; /* x^{j−2} */                                                              \
+        excess = (excess - ratio_less_1) *                                                               \
+                 inverse_ratio; /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ */          \
       }                                                                                                  \
       /* behind holds j − 2 = 1..last − 2; the two highest powers, whose F start at 0, are the       \
        * cut-off's. */                                                                                   \
