@@ -55,7 +55,7 @@
 #define PN_MOMENT_RATIO 0.97f     /* the largest g_max / r (backward) or r (forward) taken */
 #define PN_MOMENT_CUT 1.0e-8f     /* the ratio's power where the powers are cut off */
 #define PN_MOMENT_MAX_TAIL 640    /* ln(PN_MOMENT_CUT) / ln(PN_MOMENT_RATIO) = 605 */
-#define PN_MOMENT_EXACT_EVERY 8   /* steps between exact powers in the backward sweep (2^n) */
+#define PN_MOMENT_EXACT_EVERY 32  /* steps between exact powers in the backward sweep (2^n) */
 
 /* The largest of the lanes. */
 inline float __attribute__((overloadable)) pn_lane_max(float v) {
