@@ -42,12 +42,14 @@
  * backward from F = 0 beyond the order, F_{j−2} = (j F_j + [f^{j−1} f′]_0^Θ) / ((j − 1) r²),
  * which damps the start's error by (g_max / r)² a step, where the arc misses its circle's peak
  * by g_max <= PN_MOMENT_RATIO r (the bracket as x^{j−1} (expm1((j − 1) log1p((f(Θ) − x) / x))
- * f′(Θ) + f′(Θ) − y), without cancellation); forward, as above, where the arc holds the peak or
- * nearly and r <= PN_MOMENT_RATIO. The sum over j is cut where that ratio (g_max / r, or r, each
- * at least g_max) to the power beyond the order is PN_MOMENT_CUT, at most PN_MOMENT_MAX_TAIL
- * powers beyond (the lanes' largest need: an arc far off the axis needs a few dozen). Arcs near
- * the axis (both ratios above PN_MOMENT_RATIO, where the beam dominates E) keep the recurrences
- * above. Each way gives the arc's own exact term, so the arcs of one region may mix them. */
+ * f′(Θ) + f′(Θ) − y), without cancellation; exact every PN_MOMENT_EXACT_EVERY steps, stepped
+ * down by 1/x and ((·) − (ρ − 1)) / ρ, ρ = f(Θ) / x, between); forward, as above, where the arc
+ * holds the peak or nearly and r <= PN_MOMENT_RATIO. The sum over j is cut where that ratio (g_max
+ * / r, or r, each at least g_max) to the power beyond the order is PN_MOMENT_CUT, at most
+ * PN_MOMENT_MAX_TAIL powers beyond (the lanes' largest need: an arc far off the axis needs a few
+ * dozen). Arcs near the axis (both ratios above PN_MOMENT_RATIO, where the beam dominates E) keep
+ * the recurrences above. Each way gives the arc's own exact term, so the arcs of one region may mix
+ * them. */
 
 #include "prelude.cl"
 
@@ -114,19 +116,23 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
     if (!pn_any(backward | forward)) return direct;                                                      \
     /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,            \
      * both bounding g_max) to that power is PN_MOMENT_CUT. */                                           \
-    T ratio = select(select((T)(0.0f), r, forward), g_max / r, backward);                                \
-    T need = log(PN_MOMENT_CUT) / log(fmax(ratio, 1e-3f));                                               \
-    const int last = order + 2 + (int)fmin(pn_lane_max(need), (float)PN_MOMENT_MAX_TAIL);                \
+    /* Each sweep runs as far as its lanes' largest need. */                                             \
+    T need_ahead = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(r, 1e-3f)), forward);                 \
+    T need_behind = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(g_max / r, 1e-3f)), backward);       \
+    const int last_ahead =                                                                               \
+        order + 2 + (int)fmin(pn_lane_max(need_ahead), (float)PN_MOMENT_MAX_TAIL);                       \
+    const int last_behind =                                                                              \
+        order + 2 + (int)fmin(pn_lane_max(need_behind), (float)PN_MOMENT_MAX_TAIL);                      \
     /* Δψ, the azimuth from a to b about w: the angle from w × a to w × b, signed by w·(b × a). */ \
     T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                         \
     T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                         \
     T dpsi = atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);                      \
     T wnm = wn * wm;                                                                                     \
-    /* Forward: F_j for j = 1..last, as moment_term. */                                                  \
+    /* Forward: F_j for j = 1..last_ahead, as moment_term. */                                            \
     T ahead = 0.0f;                                                                                      \
     if (pn_any(forward)) {                                                                               \
       T f_prev = theta, f_prev2 = 0.0f, d = 0.0f, xp = 1.0f;                                             \
-      for (int j = 1; j <= last; ++j) {                                                                  \
+      for (int j = 1; j <= last_ahead; ++j) {                                                            \
         const float jf = (float)j;                                                                       \
         T f_j = ((jf - 1.0f) * r2 * f_prev2 - (d * slope_end + xp * delta_slope)) / jf;                  \
         const float cj = j <= order ? em->c[j] / (jf + 2.0f) : 0.0f;                                     \
@@ -138,7 +144,7 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
         f_prev = f_j;                                                                                    \
       }                                                                                                  \
     }                                                                                                    \
-    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last and last − 1. */                \
+    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last_behind and the one below. */      \
     T behind = 0.0f;                                                                                     \
     if (pn_any(backward)) {                                                                              \
       T f_hi = 0.0f, f_lo = 0.0f; /* F_j, F_{j−1} */                                                   \
@@ -147,9 +153,9 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
           log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
       T power = 0.0f, excess = 0.0f; /* x^{j−1}, (f(Θ)/x)^{j−1} − 1 */                            \
       T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);          \
-      for (int j = last; j >= 3; --j) {                                                                  \
+      for (int j = last_behind; j >= 3; --j) {                                                           \
         const float jf = (float)j;                                                                       \
-        if (((last - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                           \
+        if (((last_behind - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                    \
           power = pown(x, (M)(j - 1));                                                                   \
           excess = expm1((jf - 1.0f) * log_ratio);                                                       \
         }                                                                                                \
@@ -165,8 +171,8 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
         excess = (excess - ratio_less_1) *                                                               \
                  inverse_ratio; /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ */          \
       }                                                                                                  \
-      /* behind holds j − 2 = 1..last − 2; the two highest powers, whose F start at 0, are the       \
-       * cut-off's. */                                                                                   \
+      /* behind holds j − 2 = 1..last_behind − 2; the two highest powers, whose F start at 0, are    \
+       * the cut-off's. */                                                                               \
     }                                                                                                    \
     T azimuth =                                                                                          \
         em->c[0] * theta * nm + 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));           \
