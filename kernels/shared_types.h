@@ -63,7 +63,7 @@ typedef struct {
  * L = 2 · halfLuminance · Σ_k coefficient[k] g^k, k = 0..order. A photometric luminaire's opening
  * has w = −N, N its emission direction (g = cos φ of the emitted direction); the CIE overcast sky
  * through an opening has w = +z (g = sin of the altitude). */
-#define PN_MAX_LUMINANCE_TERMS 13 /* orders 0..12 (host/photometry/luminance_fit.hpp) */
+#define PN_MAX_LUMINANCE_TERMS 49 /* powers 0..48 (host/photometry/luminance_fit.hpp) */
 typedef struct {
   pn_float4 axis;                            /* xyz: the unit axis w; w 0 */
   float coefficient[PN_MAX_LUMINANCE_TERMS]; /* cd/m² */

@@ -477,14 +477,15 @@ TEST(DaylightProvision, TheSiteGivesTheMedianDiffuseIlluminance) {
 TEST(DaylightFactor, CsvRowsCarryDfInPercentAndItsPartsAddUp) {
   EXPECT_EQ(gridCsvHeader(true, true),
             "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,DF_pct,DF_direct_pct,"
-            "DF_internal_pct,inside\n");
+            "DF_internal_pct,SC_pct,ERC_pct,IRC_pct,inside\n");
   EXPECT_EQ(gridCsvHeader(false, true), "x_m,y_m,z_m,nx,ny,nz,E_lx,DF_pct,inside\n");
   GridRows rows(NumberDigits::Double);
   rows.setOutdoorIlluminance(10000.0);
   rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), 250.0, 200.0, "");
   rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), 125.0, "");
-  // E 250 lx of 10 000: DF 2.5 %, 2 % direct, 0.5 % internal; E 125 lx: 1.25 %.
-  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,250,200,50,2.5,2,0.5,\n1,2,0.85,0,0,1,125,1.25,\n");
+  // E 250 lx of 10 000: DF 2.5 %, 2 % direct, 0.5 % internal, and with no split given SC 2 %,
+  // ERC 0, IRC 0.5 %; E 125 lx: 1.25 %.
+  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,250,200,50,2.5,2,0.5,2,0,0.5,\n1,2,0.85,0,0,1,125,1.25,\n");
 }
 
 TEST(DaylightFactor, TheTableHasADfRowPerGrid) {

@@ -29,14 +29,11 @@ Scene office() {
 
 // The grid's total E (Estimator: direct + final gather) at every pixel centre that shows a
 // solid, by pixel index; NaN elsewhere.
-std::vector<double> gridTotal(Renderer& renderer, const Scene& scene, const View& view) {
+std::vector<double> gridTotal(Renderer& renderer, Estimator& estimator, const View& view) {
   const std::vector<std::optional<SamplePoint>> visible = renderer.visiblePoints(view);
   std::vector<SamplePoint> points;
   for (const auto& p : visible)
     if (p) points.push_back(*p);
-  EstimatorOptions options;
-  options.device = "cpu";
-  Estimator estimator(options, scene);
   const PointIlluminance e = estimator.illuminance(points);
   std::vector<double> byPixel(visible.size(), NAN);
   for (std::size_t i = 0, j = 0; i < visible.size(); ++i)
@@ -94,12 +91,15 @@ Agreement agreement(const RenderedView& rendered, const std::vector<double>& gri
 // gather itself (gatherOutlier, at most 1e-4 of the pixels) are counted, not compared.
 TEST(RenderedTotal, APixelEqualsTheGridsTotalAtItsPoint) {
   const Scene scene = office();
+  Renderer renderer(cpuDevice(), scene, {}, MeshOptions{});
+  EstimatorOptions options;
+  options.device = "cpu";
+  Estimator estimator(options, scene);
   for (const View& full : scene.views) {
     View view = full;
     view.width = 320;
     view.height = 180;
-    Renderer renderer(cpuDevice(), scene, {}, MeshOptions{});
-    const std::vector<double> grid = gridTotal(renderer, scene, view);
+    const std::vector<double> grid = gridTotal(renderer, estimator, view);
     RenderOptions everywhere;
     everywhere.indirectSpacing = 1;
     const RenderedView exact = renderer.render(view, everywhere);
@@ -167,7 +167,10 @@ views:
   Renderer total(cpuDevice(), scene, {}, MeshOptions{});
   const RenderedView d = direct.render(view, RenderOptions{});
   const RenderedView t = total.render(view, RenderOptions{});
-  const std::vector<double> grid = gridTotal(total, scene, view);
+  EstimatorOptions options;
+  options.device = "cpu";
+  Estimator estimator(options, scene);
+  const std::vector<double> grid = gridTotal(total, estimator, view);
   const std::vector<std::optional<SamplePoint>> visible = total.visiblePoints(view);
   int ceiling = 0;
   double worst = 0.0, least = INFINITY;

@@ -545,16 +545,18 @@ TEST(SunInGrids, TheDaylightFactorLeavesTheSunOut) {
 TEST(SunInGrids, CsvRowsCarryTheSunAndTheDaylightFactorWithoutIt) {
   EXPECT_EQ(gridCsvHeader(true, true, true),
             "x_m,y_m,z_m,nx,ny,nz,E_lx,E_direct_lx,E_indirect_lx,E_sun_lx,E_sun_reflected_lx,"
-            "DF_pct,DF_direct_pct,DF_internal_pct,inside\n");
+            "DF_pct,DF_direct_pct,DF_internal_pct,SC_pct,ERC_pct,IRC_pct,inside\n");
   EXPECT_EQ(gridCsvHeader(false, false, true), "x_m,y_m,z_m,nx,ny,nz,E_lx,E_sun_lx,inside\n");
   GridRows rows(NumberDigits::Double);
   rows.setOutdoorIlluminance(10000.0);
   rows.setSunColumn(true);
-  const double direct = 1200.0;
-  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(), GridRowValues{1300.0, &direct, 1000.0, 50.0}, "");
-  // E 1300 lx: 1200 direct (1000 of it the sun's, 200 the sky's), 100 reflected (50 of it the
-  // sun's): DF (1300 − 1000 − 50) / 100 = 2.5 %, 2 % direct, 0.5 % internal.
-  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,1300,1200,100,1000,50,2.5,2,0.5,\n");
+  const double direct = 1200.0, sky = 150.0, external = 50.0;
+  rows.add(Vec3(1, 2, 0.85), Vec3::UnitZ(),
+           GridRowValues{1300.0, &direct, 1000.0, 50.0, &sky, &external}, "");
+  // E 1300 lx: 1200 direct (1000 of it the sun's, 150 the sky's, 50 the ground's), 100
+  // reflected (50 of it the sun's): DF (1300 − 1000 − 50) / 100 = 2.5 %, 2 % direct, 0.5 %
+  // internal; SC 1.5 %, ERC 0.5 %, IRC 2.5 − 1.5 − 0.5 = 0.5 %.
+  EXPECT_EQ(rows.csv(), "1,2,0.85,0,0,1,1300,1200,100,1000,50,2.5,2,0.5,1.5,0.5,0.5,\n");
 }
 
 TEST(SunInGrids, ASweepCaseIsComputedAgainWhenTheSunChanges) {
@@ -646,6 +648,9 @@ TEST(SunInGrids, TheCsvReadsBackWithItsSunColumn) {
   // 100 = 2.5 % (direct (1200 − 1000) / 100 = 2 %) and 300 / 100 = 3 % (2 %).
   EXPECT_EQ(read.daylightFactor, (std::vector<double>{2.5, 3.0}));
   EXPECT_EQ(read.daylightFactorDirect, (std::vector<double>{2.0, 2.0}));
+  // Without the components given, the direct daylight is written as SC, ERC 0.
+  EXPECT_EQ(read.skyComponentFactor, (std::vector<double>{2.0, 2.0}));
+  EXPECT_EQ(read.externalComponentFactor, (std::vector<double>{0.0, 0.0}));
 }
 
 // The example orientation study: each case's sun is the first case's turned about the vertical by

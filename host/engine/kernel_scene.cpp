@@ -8,10 +8,14 @@
 #include <stdexcept>
 
 #include "geometry/nishita.hpp"
+#include "photometry/luminance_fit.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
-static_assert(sizeof(PnLuminancePolynomial) == 80,
+static_assert(sizeof(PnLuminancePolynomial) == 224,
               "PnLuminancePolynomial layout must match kernels/shared_types.h");
+static_assert(penumbra::photometry::kLuminanceFitMaxPower < PN_MAX_LUMINANCE_TERMS &&
+                  penumbra::photometry::kLuminanceFitMaxOrder < PN_MAX_LUMINANCE_TERMS,
+              "the luminance fits must fit the kernel's PnLuminancePolynomial");
 static_assert(sizeof(PnOccluder) == 80, "PnOccluder layout must match kernels/shared_types.h");
 static_assert(sizeof(PnAperture) == 128, "PnAperture layout must match kernels/shared_types.h");
 static_assert(sizeof(PnPosition) == 32, "PnPosition layout must match kernels/shared_types.h");

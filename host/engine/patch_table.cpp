@@ -176,6 +176,14 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
   const std::size_t supers = (groups + kGroupsPerSuper - 1) / kGroupsPerSuper;
   std::vector<std::vector<int>> superCandidates(supers * faceCount);  // [super * faceCount + f]
   std::vector<char> superHidden(supers * faceCount);  // one caster hides f from the super-group
+  // Each super-group's box once, not once per face: with element faces as sources (thousands)
+  // the boxes would cost as much as the table.
+  std::vector<BoundingBox> superBoxes(supers);
+  tbb::parallel_for(std::size_t{0}, supers, [&](std::size_t super) {
+    const std::size_t firstItem = super * kGroupsPerSuper * kItemsPerGroup;
+    const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
+    superBoxes[super] = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
+  });
   tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
@@ -183,7 +191,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     const FaceVolumes& faceVolumes = volumes[shadows.faces[f].casterFace(f)];
     std::vector<int> all(faceVolumes.solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    const BoundingBox box = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
+    const BoundingBox& box = superBoxes[sf / faceCount];
     boxCandidates(faceVolumes, box, all, margin, superCandidates[sf]);
     superHidden[sf] = boxHidden(faceVolumes, box, superCandidates[sf], margin, points,
                                 firstItem * PN_LANES, items * PN_LANES);

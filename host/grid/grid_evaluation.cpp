@@ -247,13 +247,14 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     }
   };
 
-  std::vector<double> e, direct, sun, sunReflected;
+  std::vector<double> e, direct, sun, sunReflected, skyComponent, externalComponent;
+  double skyComponentSum = 0.0, externalComponentSum = 0.0;  // lx, points not inside solids
   GridMetricsSum directSums;
   SunMetricsSum sunSums;
   std::vector<double> daylightTotal, daylightDirect;  // lx, points not inside solids (a sky)
   // Whether the estimator gives the direct part too, known from its first answer; the points
   // before it are inside solids (E = 0, direct part 0).
-  bool answered = false, split = false;
+  bool answered = false, split = false, components = false;
   // The chunk's values into the metrics, then to the sink.
   const auto finish = [&](const Chunk& chunk, const PointIlluminance& values) {
     const std::vector<int>& inside = chunk.inside;
@@ -262,19 +263,27 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     direct.assign(split ? inside.size() : 0, 0.0);
     sun.assign(scene.sun ? inside.size() : 0, 0.0);
     sunReflected.assign(scene.sun && split ? inside.size() : 0, 0.0);
+    skyComponent.assign(components ? inside.size() : 0, 0.0);
+    externalComponent.assign(components ? inside.size() : 0, 0.0);
     if (!chunk.outside.empty()) {
       if (values.total.size() != chunk.outside.size() ||
           (!values.direct.empty() && values.direct.size() != chunk.outside.size()) ||
           (!values.sun.empty() && values.sun.size() != chunk.outside.size()) ||
           (!values.sunReflected.empty() && values.sunReflected.size() != chunk.outside.size()) ||
-          (answered && split == values.direct.empty())) {
+          (!values.skyComponent.empty() && values.skyComponent.size() != chunk.outside.size()) ||
+          values.externalComponent.size() != values.skyComponent.size() ||
+          (answered && split == values.direct.empty()) ||
+          (answered && components == values.skyComponent.empty())) {
         throw std::logic_error("estimator returned the wrong number of values");
       }
       if (!answered) {
         answered = true;
         split = !values.direct.empty();
+        components = !values.skyComponent.empty();
         direct.assign(split ? inside.size() : 0, 0.0);
         sunReflected.assign(scene.sun && split ? inside.size() : 0, 0.0);
+        skyComponent.assign(components ? inside.size() : 0, 0.0);
+        externalComponent.assign(components ? inside.size() : 0, 0.0);
       }
       for (std::size_t k = 0; k < values.total.size(); ++k) e[outsideAt[k]] = values.total[k];
       for (std::size_t k = 0; k < values.direct.size(); ++k)
@@ -284,6 +293,12 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
       if (!sunReflected.empty())
         for (std::size_t k = 0; k < values.sunReflected.size(); ++k)
           sunReflected[outsideAt[k]] = values.sunReflected[k];
+      for (std::size_t k = 0; k < values.skyComponent.size(); ++k) {
+        skyComponent[outsideAt[k]] = values.skyComponent[k];
+        externalComponent[outsideAt[k]] = values.externalComponent[k];
+        skyComponentSum += values.skyComponent[k];
+        externalComponentSum += values.externalComponent[k];
+      }
     }
     for (std::size_t k = 0; k < e.size(); ++k) sums.add(e[k], inside[k] >= 0);
     // The daylight factor leaves the sun out, direct and reflected.
@@ -298,7 +313,9 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     for (std::size_t k = 0; k < sun.size(); ++k) sunSums.add(sun[k], inside[k] >= 0);
     for (std::size_t k = 0; k < e.size(); ++k)
       directSums.add(k < direct.size() ? direct[k] : e[k], inside[k] >= 0);
-    if (sink) sink(GridBatch{chunk.first, e, direct, sun, sunReflected, inside, chunk.onSolid});
+    if (sink)
+      sink(GridBatch{chunk.first, e, direct, sun, sunReflected, skyComponent, externalComponent,
+                     inside, chunk.onSolid});
     if (progress) progress(chunk.first + inside.size(), n);
   };
 
@@ -320,12 +337,23 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   }
   run.metrics = sums.metrics(grid.spacing);
   if (split) run.directMetrics = directSums.metrics(grid.spacing);
+  const std::size_t daylightTotalCount = daylightTotal.size();
   if (scene.sky)
     run.daylight =
         daylightMetrics(std::move(daylightTotal), daylightDirect, scene.sky->horizontalIlluminance,
                         scene.site && facesUp(grid) ? scene.site->medianDiffuseIlluminance
                                                     : std::optional<double>());
-  if (run.daylight) run.daylight->horizontal = facesUp(grid);
+  if (run.daylight) {
+    run.daylight->horizontal = facesUp(grid);
+    if (components) {
+      // Means in %: the sums over the points counted, in units of E_h / 100.
+      const double perPoint = daylightTotalCount > 0 ? 100.0 / scene.sky->horizontalIlluminance /
+                                                           static_cast<double>(daylightTotalCount)
+                                                     : std::numeric_limits<double>::quiet_NaN();
+      run.daylight->components = daylightComponents(*run.daylight, perPoint * skyComponentSum,
+                                                    perPoint * externalComponentSum);
+    }
+  }
   if (scene.sun) run.sun = sunSums.metrics();
   run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return run;
@@ -349,6 +377,10 @@ GridEvaluation evaluateGrid(const Scene& scene, const CalculationGrid& grid,
       evaluation.direct.push_back(batch.direct.empty() ? batch.illuminance[k] : batch.direct[k]);
       if (!batch.sun.empty()) evaluation.sun.push_back(batch.sun[k]);
       if (!batch.sunReflected.empty()) evaluation.sunReflected.push_back(batch.sunReflected[k]);
+      if (!batch.skyComponent.empty()) {
+        evaluation.skyComponent.push_back(batch.skyComponent[k]);
+        evaluation.externalComponent.push_back(batch.externalComponent[k]);
+      }
     }
   };
   const GridRun run = streamGrid(scene, grid, estimate, batchSize, keep, progress);

@@ -77,6 +77,9 @@ struct GridBatch {
   // lx, the sun's light reflected by the room, part of E (not of direct); empty without a sun or
   // for a direct-only run
   std::span<const double> sunReflected;
+  // lx, the sky and the externally reflected components of the daylight (PointIlluminance);
+  // empty without a sky or for a direct-only run
+  std::span<const double> skyComponent, externalComponent;
   std::span<const int> inside;   // index into Scene::solids, -1 for none
   std::span<const int> onSolid;  // the solid each point lies on, -1 for none
 };
@@ -115,6 +118,8 @@ struct GridEvaluation {
   std::vector<double> direct;        // lx, its direct part; empty for a direct-only run
   std::vector<double> sun;           // lx, the direct sunlight in E; empty without a sun
   std::vector<double> sunReflected;  // lx, the sun's light reflected by the room, part of E
+  // lx, the sky and the externally reflected components (GridBatch); empty without them
+  std::vector<double> skyComponent, externalComponent;
   GridMetrics metrics;
   std::optional<DaylightMetrics> daylight;  // when the scene has a sky
   std::optional<SunMetrics> sunMetrics;     // when the scene has a sun

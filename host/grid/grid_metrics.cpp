@@ -148,4 +148,9 @@ DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<con
   return m;
 }
 
+DaylightComponents daylightComponents(const DaylightMetrics& metrics, double skyMean,
+                                      double externalMean) {
+  return {skyMean, externalMean, metrics.mean - skyMean - externalMean};
+}
+
 }  // namespace penumbra

@@ -70,6 +70,14 @@ struct DaylightProvision {
   std::string_view reached() const;
 };
 
+// The mean daylight factor split into the BRE components (docs/method.md, "Daylight factor
+// components"), %: they add up to DaylightMetrics::mean.
+struct DaylightComponents {
+  double sky = 0.0;                  // SC: the sky seen through the openings, direct
+  double externallyReflected = 0.0;  // ERC: the ground through the openings, the obstructions
+  double internallyReflected = 0.0;  // IRC: the room's faces, the rest of the mean
+};
+
 struct DaylightMetrics {
   double outdoorIlluminance = 0.0;                        // lx: E_h
   double mean = 0.0, median = 0.0, min = 0.0, max = 0.0;  // %; NaN when no point counts
@@ -79,6 +87,8 @@ struct DaylightMetrics {
   double directMean = 0.0;    // %: the mean DF of the direct part (sky and ground through the
                               // openings); the mean itself for a direct-only run
   double internalMean = 0.0;  // %: mean − directMean, the internally reflected component
+  // With interreflection: the mean's components.
+  std::optional<DaylightComponents> components;
   std::optional<DaylightProvision> provision;  // when the site gives E_v,d,med
   // Whether the grid faces up, a horizontal reference plane: EN 17037 judges no other.
   bool horizontal = true;
@@ -112,6 +122,11 @@ DaylightMetrics daylightMetrics(std::vector<double> illuminance, std::span<const
 DaylightMetrics daylightFactorMetrics(std::vector<double> factors, std::span<const double> direct,
                                       double outdoorIlluminance,
                                       std::optional<double> medianDiffuseIlluminance);
+
+// The components of `metrics`' mean from the means of the sky and the externally reflected
+// components (%); IRC is the rest of the mean.
+DaylightComponents daylightComponents(const DaylightMetrics& metrics, double skyMean,
+                                      double externalMean);
 
 // `inside[i]` is the index of the solid that strictly contains point i, -1 for none.
 GridMetrics gridMetrics(std::span<const double> illuminance, std::span<const int> inside,

@@ -27,11 +27,13 @@ struct GridReport {
   // Per point, in the grid's order. Empty when the points went to the files batch by batch
   // (`penumbra grid`, streamGrid): summary.json and the table need only the rest.
   std::vector<SamplePoint> points;
-  std::vector<std::string> insideSolids;     // the containing solid's name, "" for none
-  std::vector<double> illuminance;           // lx, total; 0 inside solids
-  std::vector<double> direct;                // lx, its direct part; empty for a direct-only run
-  std::vector<double> sun;                   // lx, the direct sunlight in E; empty without a sun
-  std::vector<double> sunReflected;          // lx, the sun's light reflected, in E; empty without
+  std::vector<std::string> insideSolids;  // the containing solid's name, "" for none
+  std::vector<double> illuminance;        // lx, total; 0 inside solids
+  std::vector<double> direct;             // lx, its direct part; empty for a direct-only run
+  std::vector<double> sun;                // lx, the direct sunlight in E; empty without a sun
+  std::vector<double> sunReflected;       // lx, the sun's light reflected, in E; empty without
+  // lx, the sky and the externally reflected components (GridBatch); empty without them
+  std::vector<double> skyComponent, externalComponent;
   GridMetrics metrics;                       // of the total
   std::optional<GridMetrics> directMetrics;  // of the direct part, when interreflection is on
   std::optional<DaylightMetrics> daylight;   // when the scene has a sky; excludes the sun
@@ -39,6 +41,8 @@ struct GridReport {
   // Read back from a CSV with a sky (readResults): DF_pct per point, %, and DF_direct_pct with
   // interreflection; empty otherwise. The run itself writes them from E.
   std::vector<double> daylightFactor, daylightFactorDirect;
+  // Read back with interreflection: SC_pct and ERC_pct per point, %.
+  std::vector<double> skyComponentFactor, externalComponentFactor;
   double seconds = 0.0;  // time spent computing E for this grid
 };
 
@@ -48,6 +52,16 @@ struct SunReport {
   double elevationDegrees = 0.0;         // °, apparent
   double directNormalIlluminance = 0.0;  // lx: E_dn
   bool aboveHorizon = true;              // below it the sun gives no light
+};
+
+// The scene's sky as the run takes it (scene.hpp, Sky).
+struct SkyReport {
+  std::string model;                   // "uniform", "cie-overcast", "cie-general"
+  double horizontalIlluminance = 0.0;  // lx: E_h, unobstructed, the daylight factor's base
+  double groundReflectance = 0.0;      // ρ_g
+  // cie-general: the CIE standard general sky type (1..15), the subdivision m and the number of
+  // patches the sky is divided into (144 m² + 1; Tregenza's 145 for m = 1); 0 for the others.
+  int cieType = 0, subdivision = 0, patches = 0;
 };
 
 // A photometric luminaire of the scene as summary.json lists it.
@@ -84,6 +98,7 @@ struct RunReport {
   // The scene's warnings, each as printed ("office.yaml:31: warning: sources[1]: ...").
   std::vector<std::string> warnings;
   std::vector<LuminaireReport> luminaires;
+  std::optional<SkyReport> sky;  // when the scene has a sky
   std::optional<SunReport> sun;  // when the scene has a sun
   std::vector<GridReport> grids;
 };

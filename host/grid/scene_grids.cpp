@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "illuminance/patch_sky.hpp"
+
 namespace penumbra {
 
 RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
@@ -24,10 +26,24 @@ RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
     report.warnings.push_back(warningText(scene.file, warning));
   }
   report.luminaires = luminaireReports(scene);
+  if (scene.sky) report.sky = skyReport(*scene.sky);
   if (scene.sun)
     report.sun =
         SunReport{scene.sun->position.azimuthDegrees, scene.sun->position.apparentElevationDegrees,
                   scene.sun->directNormalIlluminance, scene.sun->aboveHorizon()};
+  return report;
+}
+
+SkyReport skyReport(const Sky& sky) {
+  SkyReport report;
+  report.model = skyModelName(sky.model);
+  report.horizontalIlluminance = sky.horizontalIlluminance;
+  report.groundReflectance = sky.groundReflectance;
+  if (sky.model == SkyModel::CieGeneral) {
+    report.cieType = sky.cieType;
+    report.subdivision = sky.subdivision;
+    report.patches = static_cast<int>(skySubdivision(sky.subdivision).patchCentres.size());
+  }
   return report;
 }
 
@@ -119,6 +135,11 @@ class KeepingStream : public GridStream {
       if (!batch.sun.empty()) report.sun.push_back(batch.sun[k]);
       if (!batch.sun.empty())
         report.sunReflected.push_back(batch.sunReflected.empty() ? 0.0 : batch.sunReflected[k]);
+      // Inside points before the estimator's first answer: components 0; dropped afterwards
+      // when the run has none (evaluateGrids).
+      report.skyComponent.push_back(batch.skyComponent.empty() ? 0.0 : batch.skyComponent[k]);
+      report.externalComponent.push_back(
+          batch.externalComponent.empty() ? 0.0 : batch.externalComponent[k]);
     }
   }
   void finish() override {}
@@ -145,6 +166,10 @@ std::vector<GridReport> evaluateGrids(const Scene& scene,
     if (reports[g].sunMetrics) {
       reports[g].sun = std::move(keep.kept[g].sun);
       if (reports[g].directMetrics) reports[g].sunReflected = std::move(keep.kept[g].sunReflected);
+    }
+    if (reports[g].daylight && reports[g].daylight->components) {
+      reports[g].skyComponent = std::move(keep.kept[g].skyComponent);
+      reports[g].externalComponent = std::move(keep.kept[g].externalComponent);
     }
   }
   return reports;

@@ -17,6 +17,9 @@ namespace penumbra {
 // of `penumbra sweep` start from it and add their grids and times.
 RunReport runReport(const Scene& scene, const std::filesystem::path& sceneFile,
                     const Estimator& estimator, const std::string& version);
+// The sky as summary.json records it: model, E_h, ρ_g, and a cie-general sky's type,
+// subdivision and patch count.
+SkyReport skyReport(const Sky& sky);
 // The scene's photometric luminaires as the reports list them (flux, maintenance factor).
 std::vector<LuminaireReport> luminaireReports(const Scene& scene);
 

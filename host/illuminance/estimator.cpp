@@ -46,7 +46,9 @@ void Estimator::solveInterreflection() {
     HostLight host;
     const Scene* scene = scene_;
     if (skyOnHost(*scene_))
-      host.sky = [scene](std::span<const SamplePoint> points) { return skylight(*scene, points); };
+      host.sky = [scene](std::span<const SamplePoint> points) {
+        return surfaceSkylight(*scene, points);
+      };
     if (scene_->sun)
       host.sun = [scene](std::span<const SamplePoint> points) { return sunlight(*scene, points); };
     interreflection_ = std::make_unique<Interreflection>(
@@ -64,24 +66,55 @@ void Estimator::setScene(const Scene& scene) {
   }
 }
 
-PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
-  PointIlluminance e;
+std::vector<double> Estimator::directDaylight(std::span<const SamplePoint> points,
+                                              std::vector<double>* ground) {
+  std::vector<double> total;
+  if (ground) ground->assign(points.size(), 0.0);
   if (!engine_) {
-    e.total = daylightReference(*scene_, points);
-  } else {
+    total = daylightReference(*scene_, points);
+  } else if (!scene_->sky) {
     // Without a sky, E alone: the shadow classes are neither downloaded nor reordered.
-    e.total = scene_->sky ? evaluateDaylight(*engine_, *scene_, points).illuminance
-                          : engine_->illuminance(points);
+    total = engine_->illuminance(points);
+  } else {
+    const IlluminanceResult result =
+        evaluateDaylight(*engine_, *scene_, points, ground != nullptr && !skyOnHost(*scene_));
+    total = result.illuminance;
+    if (!result.bySource.empty()) {
+      // daylightScene's sources: the scene's own, then a sky and a ground source per opening.
+      const std::size_t sources = static_cast<std::size_t>(result.sourceCount);
+      for (std::size_t s = scene_->sources.size() + 1; s < sources; s += 2)
+        for (std::size_t i = 0; i < points.size(); ++i)
+          (*ground)[i] += result.bySource[i * sources + s];
+    }
   }
   if (skyOnHost(*scene_)) {  // the sky past obstructions outside the room, on the host
-    const std::vector<double> sky = skylight(*scene_, points);
-    for (std::size_t i = 0; i < sky.size(); ++i) e.total[i] += sky[i];
+    const SkylightParts sky = skylightParts(*scene_, points);
+    for (std::size_t i = 0; i < sky.total.size(); ++i) total[i] += sky.total[i];
+    if (ground) *ground = sky.ground;
   }
+  return total;
+}
+
+PointIlluminance Estimator::illuminance(std::span<const SamplePoint> points) {
+  PointIlluminance e;
+  const bool components = interreflection_ && scene_->sky;
+  std::vector<double> ground;
+  e.total = directDaylight(points, components ? &ground : nullptr);
+  std::vector<double> outsideReflected;
   if (interreflection_) {
     e.direct = e.total;
     InterreflectedIlluminance indirect = interreflection_->indirectParts(points);
     for (std::size_t i = 0; i < indirect.total.size(); ++i) e.total[i] += indirect.total[i];
     e.sunReflected = std::move(indirect.fromSun);
+    outsideReflected = std::move(indirect.fromOutside);
+  }
+  if (components) {
+    e.skyComponent.resize(points.size());
+    e.externalComponent = std::move(ground);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      e.skyComponent[i] = e.direct[i] - e.externalComponent[i];
+    for (std::size_t i = 0; i < outsideReflected.size(); ++i)
+      e.externalComponent[i] += outsideReflected[i];
   }
   if (scene_->sun) {
     e.sun = sunlight(*scene_, points);

@@ -32,6 +32,15 @@ struct PointIlluminance {
   // lx, the sun's light reflected by the room: part of total, not of direct; empty without a
   // sun or without interreflection
   std::vector<double> sunReflected;
+  // With a sky and interreflection, the daylight's split into the BRE components (lx, the sun
+  // left out; docs/method.md, "Daylight factor components"); empty otherwise:
+  //   skyComponent       the direct light but the sun's and the ground's: the sky seen through
+  //                      the openings (and the direct light of the scene's own sources)
+  //   externalComponent  the ground seen through the openings, plus what the faces outside the
+  //                      room reflect straight to the point (their light from the sky and ground)
+  // The internally reflected component is the rest, total − sun − sunReflected − both.
+  std::vector<double> skyComponent;
+  std::vector<double> externalComponent;
   PointIlluminance() = default;
   PointIlluminance(std::vector<double> directOnly) : total(std::move(directOnly)) {}  // NOLINT
 };
@@ -83,6 +92,10 @@ class Estimator {
 
  private:
   void solveInterreflection();
+  // E of the kernel's sources and luminaires and of the host's sky at `points`, with the ground
+  // seen through the openings in `ground` when it is given (interreflected runs with a sky).
+  std::vector<double> directDaylight(std::span<const SamplePoint> points,
+                                     std::vector<double>* ground);
   // The host reference at `points`, through the sky's groups when the scene has one.
   std::vector<double> daylightReference(const Scene& scene,
                                         std::span<const SamplePoint> points) const;

@@ -18,8 +18,8 @@
 // obstructions, and the exact one with them. A `cie-general` sky is a sky of patches
 // (patch_sky.hpp): each piece of a patch, placed beyond every solid and cut to the directions
 // through O (far_polygon.hpp, throughHole), gives L_patch M_0 over the part P sees. The
-// obstructions are black to the sky: the light they reflect (the externally reflected
-// component) is not counted.
+// obstructions block the sky here; the light they reflect (the externally reflected component)
+// is the interreflection's, which lights their faces with surfaceSkylight.
 #include <optional>
 #include <span>
 #include <vector>
@@ -34,6 +34,24 @@ namespace penumbra {
 // has no sky. Whatever skyOnHost says (the Estimator asks it only where it holds).
 std::vector<double> skylight(const Scene& scene, std::span<const SamplePoint> points);
 
+// E (lx) from the sky and the ground through the openings, and the ground's part of it: the
+// ground seen through the openings, the part of the externally reflected component that does
+// not come from the obstructions' faces.
+struct SkylightParts {
+  std::vector<double> total;   // lx: skylight()'s values, bit for bit
+  std::vector<double> ground;  // lx, part of total
+};
+SkylightParts skylightParts(const Scene& scene, std::span<const SamplePoint> points);
+
+// E (lx) from the sky and the ground on the faces that exchange light (the interreflection's
+// nodes): skylight() at points inside the room; at points outside it (scene/daylight.hpp,
+// outsideRoom: an obstruction's faces, the room's outer faces) the whole sky and ground in front
+// of the point, past every solid, with no glazing. The directions in front of such a point P are
+// cut from the six faces of a cube about P beyond every solid (far_polygon.hpp), each cut by P's
+// tangent plane and at P's height into a sky and a ground part, integrated as throughOpening
+// integrates the far image of an opening.
+std::vector<double> surfaceSkylight(const Scene& scene, std::span<const SamplePoint> points);
+
 // The `cie-general` sky `sky` as patches, the sun towards the unit `sunDirection`, scaled so
 // that its horizontal illuminance (patch_sky.hpp) is sky.horizontalIlluminance.
 PatchSky cieGeneralSky(const Sky& sky, const Vec3& sunDirection);
@@ -42,5 +60,8 @@ PatchSky cieGeneralSky(const Sky& sky, const Vec3& sunDirection);
 // model then only gives the ground), else from the scene's uniform or overcast sky.
 std::vector<double> patchSkylight(const Scene& scene, const std::optional<PatchSky>& patches,
                                   std::span<const SamplePoint> points);
+// The same with the ground's part.
+SkylightParts patchSkylightParts(const Scene& scene, const std::optional<PatchSky>& patches,
+                                 std::span<const SamplePoint> points);
 
 }  // namespace penumbra

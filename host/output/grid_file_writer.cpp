@@ -48,6 +48,8 @@ void GridFileWriter::write(const GridBatch& batch) {
   next.direct.assign(batch.direct.begin(), batch.direct.end());
   next.sun.assign(batch.sun.begin(), batch.sun.end());
   next.sunReflected.assign(batch.sunReflected.begin(), batch.sunReflected.end());
+  next.skyComponent.assign(batch.skyComponent.begin(), batch.skyComponent.end());
+  next.externalComponent.assign(batch.externalComponent.begin(), batch.externalComponent.end());
   next.inside.assign(batch.inside.begin(), batch.inside.end());
   lock.unlock();
   changed_.notify_all();
@@ -102,9 +104,13 @@ void GridFileWriter::writeBatch(const Batch& batch) {
     const std::string_view insideField =
         inside >= 0 ? std::string_view(insideNames_.at(inside)) : std::string_view();
     const double direct = batch.direct.empty() ? batch.illuminance[k] : batch.direct[k];
-    const GridRowValues values{batch.illuminance[k], withParts_ ? &direct : nullptr,
-                               batch.sun.empty() ? 0.0 : batch.sun[k],
-                               batch.sunReflected.empty() ? 0.0 : batch.sunReflected[k]};
+    const GridRowValues values{
+        batch.illuminance[k],
+        withParts_ ? &direct : nullptr,
+        batch.sun.empty() ? 0.0 : batch.sun[k],
+        batch.sunReflected.empty() ? 0.0 : batch.sunReflected[k],
+        batch.skyComponent.empty() ? nullptr : &batch.skyComponent[k],
+        batch.externalComponent.empty() ? nullptr : &batch.externalComponent[k]};
     rows_.add(grid_->position(i), grid_->normal(i), values, insideField);
   }
   csv_.write(rows_.csv().data(), static_cast<std::streamsize>(rows_.csv().size()));

@@ -51,6 +51,9 @@ class GridFileWriter {
         direct;               // empty: direct = illuminance (a direct-only run, or inside points)
     std::vector<double> sun;  // empty: no sun
     std::vector<double> sunReflected;  // empty: no sun, a direct-only run or inside points
+    // lx, the sky and externally reflected components; empty: not split (a direct-only run,
+    // no sky, or inside points)
+    std::vector<double> skyComponent, externalComponent;
     std::vector<int> inside;
   };
   void writeBatches();              // the thread

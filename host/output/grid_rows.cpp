@@ -26,10 +26,11 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, const GridRowVal
                       std::string_view insideField) {
   const double illuminance = values.illuminance;
   const double* direct = values.direct;
-  // Room for thirteen numbers and their separators, the field and the line break; the buffer is
-  // then cut to what was written (fmt's resize leaves new bytes unset).
+  // Room for the most numbers a row holds (6 for the point, 3 for E and its parts, 2 for the
+  // sun, 6 for the daylight factor) and their separators, the field and the line break; the
+  // buffer is then cut to what was written (fmt's resize leaves new bytes unset).
   const std::size_t start = csv_.size();
-  csv_.resize(start + 13 * (kMaxNumberText + 1) + insideField.size() + 1);
+  csv_.resize(start + 17 * (kMaxNumberText + 1) + insideField.size() + 1);
   char* out = writePoint(csv_.data() + start, position, normal, ',');
   const char* e = out;
   // The .pts line: the same six numbers, blank-separated.
@@ -69,6 +70,14 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, const GridRowVal
       out = writeNumber(out, toPercent * (*direct - sun));
       *out++ = ',';
       out = writeNumber(out, toPercent * daylight - toPercent * (*direct - sun));
+      *out++ = ',';
+      const double sky = values.skyComponent ? *values.skyComponent : *direct - sun;
+      const double external = values.externalComponent ? *values.externalComponent : 0.0;
+      out = writeNumber(out, toPercent * sky);
+      *out++ = ',';
+      out = writeNumber(out, toPercent * external);
+      *out++ = ',';
+      out = writeNumber(out, toPercent * daylight - toPercent * sky - toPercent * external);
       *out++ = ',';
     }
   }

@@ -14,7 +14,12 @@
 //                interreflection DF_direct_pct = 100·(E_direct_lx − E_sun_lx)/E_h (the
 //                sky and ground seen through the openings) and DF_internal_pct (interreflected),
 //                which add up to DF_pct; E_h the sky's unobstructed horizontal illuminance. The
-//                daylight factor leaves the sun out: it is defined under the overcast sky
+//                daylight factor leaves the sun out: it is defined under the overcast sky.
+//                With interreflection the BRE split of DF_pct follows: SC_pct (the sky component:
+//                the sky seen through the openings), ERC_pct (the externally reflected
+//                component: the ground seen through the openings and the light the faces outside
+//                the room reflect to the point) and IRC_pct = DF_pct − SC_pct − ERC_pct (the
+//                internally reflected component), each 100·E/E_h of its part
 //   <grid>.res   E_lx (the total), one value a line
 //   <grid>.pts   x y z nx ny nz (m; unit normal), one point a line in the order of .res: the
 //                points as Radiance's rtrace reads them, so that .res and .pts go together
@@ -38,7 +43,9 @@ inline std::string gridCsvHeader(bool withParts, bool daylight = false, bool sun
   std::string header = "x_m,y_m,z_m,nx,ny,nz,E_lx";
   if (withParts) header += ",E_direct_lx,E_indirect_lx";
   if (sun) header += withParts ? ",E_sun_lx,E_sun_reflected_lx" : ",E_sun_lx";
-  if (daylight) header += withParts ? ",DF_pct,DF_direct_pct,DF_internal_pct" : ",DF_pct";
+  if (daylight)
+    header +=
+        withParts ? ",DF_pct,DF_direct_pct,DF_internal_pct,SC_pct,ERC_pct,IRC_pct" : ",DF_pct";
   return header + ",inside\n";
 }
 
@@ -48,6 +55,10 @@ struct GridRowValues {
   const double* direct = nullptr;  // lx, its direct part; null: no E_direct/E_indirect columns
   double sun = 0.0;                // lx, the sunlight in E; written with setSunColumn(true)
   double sunReflected = 0.0;       // lx, the sun's light reflected, in E; with `direct` and sun
+  // lx, the sky and the externally reflected components, written with `direct` and E_h; null:
+  // the split is not known, the direct daylight (direct − sun) is written as SC and ERC is 0
+  const double* skyComponent = nullptr;
+  const double* externalComponent = nullptr;
 };
 
 // Rows of both files, appended point by point into two buffers that keep their memory when

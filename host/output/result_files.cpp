@@ -113,9 +113,13 @@ void writeGridCsv(std::ostream& out, const GridReport& grid, NumberDigits digits
   if (grid.daylight) rows.setOutdoorIlluminance(grid.daylight->outdoorIlluminance);
   rows.setSunColumn(withSun);
   for (std::size_t i = 0; i < grid.points.size(); ++i) {
-    const GridRowValues values{grid.illuminance[i], withParts ? &grid.direct[i] : nullptr,
-                               i < grid.sun.size() ? grid.sun[i] : 0.0,
-                               i < grid.sunReflected.size() ? grid.sunReflected[i] : 0.0};
+    const GridRowValues values{
+        grid.illuminance[i],
+        withParts ? &grid.direct[i] : nullptr,
+        i < grid.sun.size() ? grid.sun[i] : 0.0,
+        i < grid.sunReflected.size() ? grid.sunReflected[i] : 0.0,
+        i < grid.skyComponent.size() ? &grid.skyComponent[i] : nullptr,
+        i < grid.externalComponent.size() ? &grid.externalComponent[i] : nullptr};
     rows.add(grid.points[i].position, grid.points[i].normal, values,
              csvField(grid.insideSolids[i]));
     if (rows.csv().size() > (1u << 20)) {
@@ -261,21 +265,31 @@ nlohmann::json provisionJson(const DaylightProvision& p) {
           {"levels", levels}};
 }
 
+// A component's mean (%) when the components are known, else null (a direct-only run).
+nlohmann::json optionalJson(const std::optional<DaylightComponents>& components,
+                            double DaylightComponents::*member) {
+  return components ? jsonNumber((*components).*member) : nlohmann::json(nullptr);
+}
+
 // The daylight factor figures of a grid (grid_metrics.hpp), in %.
 nlohmann::json daylightJson(const DaylightMetrics& m) {
   nlohmann::json shares = nlohmann::json::array();
   for (std::size_t k = 0; k < m.shareAtLeast.size(); ++k)
     shares.push_back({{"DF_target_pct", kDaylightFactorTargets[k]},
                       {"share_at_least_pct", jsonNumber(100.0 * m.shareAtLeast[k])}});
-  nlohmann::json result = {{"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
-                           {"DFavg_pct", jsonNumber(m.mean)},
-                           {"DFmedian_pct", jsonNumber(m.median)},
-                           {"DFmin_pct", jsonNumber(m.min)},
-                           {"DFmax_pct", jsonNumber(m.max)},
-                           {"DF_uniformity", jsonNumber(m.uniformity)},
-                           {"DFavg_direct_pct", jsonNumber(m.directMean)},
-                           {"DFavg_internal_pct", jsonNumber(m.internalMean)},
-                           {"shares", shares}};
+  nlohmann::json result = {
+      {"outdoor_horizontal_illuminance_lx", m.outdoorIlluminance},
+      {"DFavg_pct", jsonNumber(m.mean)},
+      {"DFmedian_pct", jsonNumber(m.median)},
+      {"DFmin_pct", jsonNumber(m.min)},
+      {"DFmax_pct", jsonNumber(m.max)},
+      {"DF_uniformity", jsonNumber(m.uniformity)},
+      {"DFavg_direct_pct", jsonNumber(m.directMean)},
+      {"DFavg_internal_pct", jsonNumber(m.internalMean)},
+      {"SCavg_pct", optionalJson(m.components, &DaylightComponents::sky)},
+      {"ERCavg_pct", optionalJson(m.components, &DaylightComponents::externallyReflected)},
+      {"IRCavg_pct", optionalJson(m.components, &DaylightComponents::internallyReflected)},
+      {"shares", shares}};
   if (m.provision) result["en17037"] = provisionJson(*m.provision);
   // EN 17037's reference plane is horizontal: a grid that does not face up gets no verdict.
   result["faces_up"] = m.horizontal;
@@ -336,6 +350,20 @@ nlohmann::json summaryJson(const RunReport& report) {
   if (report.interreflection)
     summary["interreflection"] = interreflectionJson(*report.interreflection);
   if (!report.luminaires.empty()) summary["luminaires"] = luminairesJson(report.luminaires);
+  if (report.sky) {
+    const SkyReport& sky = *report.sky;
+    const bool patches = sky.patches > 0;
+    // The type, subdivision and patch count of a cie-general sky; null for the exact skies.
+    const auto patchField = [&](int value) {
+      return patches ? nlohmann::json(value) : nlohmann::json(nullptr);
+    };
+    summary["sky"] = {{"model", sky.model},
+                      {"horizontal_illuminance_lx", jsonNumber(sky.horizontalIlluminance)},
+                      {"ground_reflectance", jsonNumber(sky.groundReflectance)},
+                      {"cie_type", patchField(sky.cieType)},
+                      {"subdivision", patchField(sky.subdivision)},
+                      {"patches", patchField(sky.patches)}};
+  }
   if (report.sun)
     summary["sun"] = {{"azimuth_deg", report.sun->azimuthDegrees},
                       {"elevation_deg", report.sun->elevationDegrees},

@@ -92,13 +92,21 @@ DaylightMetrics readDaylight(const nlohmann::json& entry, const GridReport& grid
   std::optional<double> median;
   if (j.contains("en17037")) median = j.at("en17037").at("median_diffuse_illuminance_lx");
   std::vector<double> factors, direct;
+  double skySum = 0.0, externalSum = 0.0;  // %, the components
   for (std::size_t i = 0; i < grid.daylightFactor.size(); ++i) {
     if (!grid.insideSolids[i].empty()) continue;
     factors.push_back(grid.daylightFactor[i]);
     if (!grid.daylightFactorDirect.empty()) direct.push_back(grid.daylightFactorDirect[i]);
+    if (!grid.skyComponentFactor.empty()) {
+      skySum += grid.skyComponentFactor[i];
+      externalSum += grid.externalComponentFactor[i];
+    }
   }
+  const auto counted = static_cast<double>(factors.size());
   DaylightMetrics metrics = daylightFactorMetrics(
       std::move(factors), direct, j.at("outdoor_horizontal_illuminance_lx").get<double>(), median);
+  if (!grid.skyComponentFactor.empty() && counted > 0.0)
+    metrics.components = daylightComponents(metrics, skySum / counted, externalSum / counted);
   // Without faces_up the grid counts as facing up: its verdict rests on the en17037 key alone.
   metrics.horizontal = j.value("faces_up", true);
   return metrics;
@@ -179,7 +187,7 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
         fmt::format("{}:1: expected one of the headers {}", fileName, headers));
   }
   // x..nz, E (and its two parts), E_sun (and with the parts its reflection), DF (and its two
-  // parts), inside.
+  // parts and its three components), inside.
   const std::size_t eFields = layout->withParts ? 3 : 1;
   const std::size_t sunColumn = 6 + eFields;
   const std::size_t dfColumn = sunColumn + (layout->sun ? (layout->withParts ? 2 : 1) : 0);
@@ -204,8 +212,11 @@ void readGridCsv(std::istream& in, const std::string& fileName, GridReport& grid
       grid.sunReflected.push_back(parseNumber(f[sunColumn + 1], where));
     if (layout->daylight) {
       grid.daylightFactor.push_back(parseNumber(f[dfColumn], where));
-      if (layout->withParts)
+      if (layout->withParts) {
         grid.daylightFactorDirect.push_back(parseNumber(f[dfColumn + 1], where));
+        grid.skyComponentFactor.push_back(parseNumber(f[dfColumn + 3], where));
+        grid.externalComponentFactor.push_back(parseNumber(f[dfColumn + 4], where));
+      }
     }
     grid.insideSolids.push_back(f[fields - 1]);
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "output/result_files.hpp"
@@ -158,18 +159,30 @@ std::string daylightTable(const RunReport& report) {
       rows.push_back({"Grid", "DFavg [%]", "DFmedian [%]", "DFmin [%]", "DFmin/DFavg"});
       for (double target : kDaylightFactorTargets)
         rows.back().push_back(fmt::format("DF >= {:g} % [% of points]", target));
-      if (report.interreflection) rows.back().push_back("DFavg internal [%]");
+      if (report.interreflection)
+        for (const char* component : {"SCavg [%]", "ERCavg [%]", "IRCavg [%]"})
+          rows.back().push_back(component);
     }
     rows.push_back(
         {grid.name, percent(d.mean), percent(d.median), percent(d.min), ratio(d.uniformity)});
     for (double share : d.shareAtLeast) rows.back().push_back(percent(100.0 * share));
-    if (report.interreflection) rows.back().push_back(percent(d.internalMean));
+    if (report.interreflection) {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const DaylightComponents c = d.components.value_or(DaylightComponents{nan, nan, nan});
+      for (double component : {c.sky, c.externallyReflected, c.internallyReflected})
+        rows.back().push_back(percent(component));
+    }
   }
   if (rows.empty()) return {};
   return fmt::format(
              "DF: daylight factor, 100 · E / {:g} lx (the sky's unobstructed horizontal "
-             "illuminance; E without the sun)\n",
-             outdoor) +
+             "illuminance; E without the sun){}\n",
+             outdoor,
+             report.interreflection
+                 ? "; DF = SC + ERC + IRC: the sky component (the sky through the openings), "
+                   "the externally reflected (the ground through them, the obstructions' faces) "
+                   "and the internally reflected"
+                 : "") +
          formatRows(rows) + provisionTable(report);
 }
 

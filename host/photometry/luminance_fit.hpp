@@ -9,6 +9,15 @@
 // the distribution about the nadir. Its error is the largest |A cos φ L − I| over all the table's
 // nodes (those behind the opening count with the fit's 0 there), relative to the peak candela:
 // what an asymmetric or narrow distribution loses to the fit.
+//
+// Two kinds of fit are tried, the first that holds is kept: the least-squares polynomial of the
+// lowest order 0..kLuminanceFitMaxOrder within the tolerance and kLuminanceConditioningLimit;
+// else a sum of powers with nonnegative coefficients, c_k >= 0 for k up to kLuminanceFitMaxPower
+// (nonnegative least squares, Lawson–Hanson), of the lowest highest power within the tolerance. A
+// narrow beam is such a sum (a beam of half-value angle α is near cos^n φ with n = ln 2 / −ln cos
+// α: 40 at 10.5°), and a sum of nonnegative terms never cancels: its conditioning is 1. The
+// kernel integrates each power with recurrences chosen per arc to stay accurate where cos^k φ is
+// small over the arc (kernels/luminance_moments.cl).
 #include <vector>
 
 #include "photometry/light_distribution.hpp"
@@ -18,17 +27,21 @@ namespace penumbra::photometry {
 // The error a fit may have (relative to the peak) for the area model to integrate it exactly;
 // beyond it the opening is split into parts, each a point source (scene/luminaire.hpp).
 constexpr double kLuminanceFitTolerance = 0.01;
-// The highest order tried.
+// The highest order of the least-squares polynomial.
 constexpr int kLuminanceFitMaxOrder = 12;
+// The highest power of the nonnegative fit (the kernel stores c_0..c_48: PN_MAX_LUMINANCE_TERMS).
+// A beam narrower than cos^48 (half value at 9.7°) is split into parts.
+constexpr int kLuminanceFitMaxPower = 48;
 // The largest conditioning (LuminanceFit::conditioning) the area model integrates: the kernel sums
 // Σ c_k M_k in float, each M_k good to about (order + 4) roundings of itself, so the sum is good to
 // about conditioning · (order + 4) · 2⁻²⁴ of the largest luminance: at most 3.8e-6 at order 12.
-// A fit beyond it (a narrow beam's, whose coefficients alternate in sign and reach 10⁵ times the
-// luminance) is split into parts like a fit beyond kLuminanceFitTolerance.
+// A polynomial beyond it (a narrow beam's, whose coefficients alternate in sign and reach 10⁵
+// times the luminance) gives way to the nonnegative fit, whose conditioning is 1.
 constexpr double kLuminanceConditioningLimit = 4.0;
 
 struct LuminanceFit {
-  std::vector<double> coefficients;  // c_0..c_order, cd/m² (the file's table, unscaled)
+  std::vector<double> coefficients;  // c_0..c_order, cd/m² (the file's table, unscaled); the
+                                     // nonnegative fit's are mostly 0
   double openingAreaM2 = 0.0;
   double peakRelativeError = 0.0;  // at the table's nodes, relative to the peak candela
 
@@ -40,9 +53,10 @@ struct LuminanceFit {
   double intensity(double cosPhi) const;  // cd: A cos φ L, 0 for cos φ <= 0
 };
 
-// The fit of the lowest order (0..maxOrder) whose error is within `tolerance` and whose
-// conditioning is within kLuminanceConditioningLimit, else the one with the least error.
-// `areaM2` > 0.
+// The least-squares polynomial of the lowest order (0..maxOrder) whose error is within
+// `tolerance` and whose conditioning is within kLuminanceConditioningLimit; else the nonnegative
+// sum of powers (maxOrder + 1..kLuminanceFitMaxPower) of the lowest highest power within
+// `tolerance`; else the polynomial with the least error. `areaM2` > 0.
 LuminanceFit fitLuminance(const LightDistribution& distribution, double areaM2,
                           double tolerance = kLuminanceFitTolerance,
                           int maxOrder = kLuminanceFitMaxOrder);

@@ -283,6 +283,20 @@ void Interreflection::finishMesh(const Scene& scene, const HostLight& host,
     const Eigen::Map<const Eigen::VectorXd> nodeSun(e.data(), static_cast<Eigen::Index>(e.size()));
     sunDirect_ = sunElementAverage(scene, host.sun, mesh_, nodeSun);
   }
+  outside_.assign(mesh_.elements.size(), 0);
+  room_ = scene.room ? &*scene.room : nullptr;
+  tolerance_ = Tolerance::forSceneSize(scene.size()).length;
+  if (room_ && scene.sky)  // the externally reflected component is the daylight's
+    for (std::size_t i = 0; i < mesh_.elements.size(); ++i)
+      outside_[i] = outsideRoom(*room_, mesh_.elements[i].polygon.centroid(), tolerance_);
+  anyOutside_ = std::find(outside_.begin(), outside_.end(), 1) != outside_.end();
+  crossing_ = anyOutside_ ? crossingTransmittance(scene) : 1.0;
+  // The elements outside as the room sees them through the glazing: τ times their own light.
+  for (std::size_t i = 0; i < outside_.size(); ++i) {
+    if (!outside_[i]) continue;
+    direct_.row(static_cast<Eigen::Index>(i)) *= crossing_;
+    if (sunDirect_.size() > 0) sunDirect_[static_cast<Eigen::Index>(i)] *= crossing_;
+  }
   report_.elements = mesh_.elements.size();
   report_.elementSize = elementSize;
   report_.nodes = mesh_.nodes.size();
@@ -299,6 +313,33 @@ Interreflection::~Interreflection() = default;
 
 Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
                                         const Eigen::MatrixXd& luminance) {
+  if (crossing_ == 1.0 || !room_) return gatherElements(points, luminance);
+  std::vector<SamplePoint> inside, outside;
+  std::vector<std::size_t> insideAt, outsideAt;
+  for (std::size_t p = 0; p < points.size(); ++p) {
+    const bool out = outsideRoom(*room_, points[p].position, tolerance_);
+    (out ? outside : inside).push_back(points[p]);
+    (out ? outsideAt : insideAt).push_back(p);
+  }
+  Eigen::MatrixXd e(static_cast<Eigen::Index>(points.size()), luminance.cols());
+  const auto place = [&](const Eigen::MatrixXd& part, const std::vector<std::size_t>& at) {
+    for (std::size_t k = 0; k < at.size(); ++k)
+      e.row(static_cast<Eigen::Index>(at[k])) = part.row(static_cast<Eigen::Index>(k));
+  };
+  if (!inside.empty()) place(gatherElements(inside, luminance), insideAt);
+  if (!outside.empty()) {
+    Eigen::MatrixXd seenOutside = luminance;
+    for (Eigen::Index i = 0; i < seenOutside.rows(); ++i)
+      seenOutside.row(i) *= outside_[static_cast<std::size_t>(i)]
+                                ? (crossing_ > 0.0 ? 1.0 / crossing_ : 0.0)
+                                : crossing_;
+    place(gatherElements(outside, seenOutside), outsideAt);
+  }
+  return e;
+}
+
+Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> points,
+                                                const Eigen::MatrixXd& luminance) {
   Eigen::MatrixXd e =
       Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), luminance.cols());
   if (!geometry_) return e;
@@ -333,15 +374,30 @@ std::vector<double> Interreflection::indirect(std::span<const SamplePoint> point
 
 InterreflectedIlluminance Interreflection::indirectParts(std::span<const SamplePoint> points) {
   InterreflectedIlluminance parts;
-  if (sunLuminance_.size() == 0) {
+  const bool outside = anyOutside_;
+  if (sunLuminance_.size() == 0 && !outside) {
     parts.total = indirect(points);
     return parts;
   }
-  Eigen::MatrixXd luminance(luminance_.size(), 2);
-  luminance << luminance_, sunLuminance_;
+  // Columns: every element's luminance, the sun's part of it, the part of the elements outside
+  // the room without the sun's; one gather.
+  const bool sun = sunLuminance_.size() > 0;
+  Eigen::MatrixXd luminance(luminance_.size(), 1 + int(sun) + int(outside));
+  luminance.col(0) = luminance_;
+  if (sun) luminance.col(1) = sunLuminance_;
+  if (outside) {
+    Eigen::VectorXd fromOutside = photometricRows(solution_.luminance);
+    for (Eigen::Index i = 0; i < fromOutside.size(); ++i)
+      if (!outside_[static_cast<std::size_t>(i)]) fromOutside[i] = 0.0;
+    luminance.col(luminance.cols() - 1) = fromOutside;
+  }
   const Eigen::MatrixXd e = gather(points, luminance);
-  parts.total.assign(e.col(0).data(), e.col(0).data() + e.rows());
-  parts.fromSun.assign(e.col(1).data(), e.col(1).data() + e.rows());
+  const auto column = [&](Eigen::Index c) {
+    return std::vector<double>(e.col(c).data(), e.col(c).data() + e.rows());
+  };
+  parts.total = column(0);
+  if (sun) parts.fromSun = column(1);
+  if (outside) parts.fromOutside = column(luminance.cols() - 1);
   return parts;
 }
 

@@ -4,7 +4,14 @@
 // occluded contour integral averaged over each receiving element (element_transfer), the
 // radiosity equations are solved per RGB channel (radiosity_solver), and the indirect E at any
 // point is the kernel's exact integral over every element at its solved luminance (the final
-// gather: no interpolation between points). The sun's direct light on the elements
+// gather: no interpolation between points). Faces outside the room (an obstruction's, the
+// room's outer faces: scene/daylight.hpp, outsideRoom) are elements too, lit by the sky, the
+// ground and the sun in front of them (HostLight); their light enters through the openings'
+// glazing at its transmittance τ, so their luminance is solved as the room sees it, τ times their
+// own, by scaling their direct light: exact for what they send into the room and exchange among
+// themselves; the light the room sends out to them counts τ⁻² times too much (none at τ = 1),
+// a term small beside the sky and ground their faces see. The sun's direct light on the
+// elements
 // (HostLight::sun) is a right-hand side of its own, solved alone and added, so that
 // its part of the indirect E is known (the daylight factor leaves it out); the mesh follows the
 // other light only, so a scene's daylight factor does not depend on its sun. A scene lit by the
@@ -46,6 +53,11 @@ struct InterreflectionReport {
 struct InterreflectedIlluminance {
   std::vector<double> total;    // lx
   std::vector<double> fromSun;  // lx, part of total; empty without a sun
+  // lx, part of total, not of fromSun: the light that elements outside the room (an
+  // obstruction's faces, scene/daylight.hpp outsideRoom) reflect straight to the point, the
+  // externally reflected component's share of the interreflection; empty when no element is
+  // outside.
+  std::vector<double> fromOutside;
 };
 
 class Interreflection {
@@ -84,8 +96,13 @@ class Interreflection {
 
  private:
   // Σ_j E_j(P)·luminance(j, c) at every point P for every column c, E_j the kernel's E from
-  // element j at 1 cd/m²: points × columns, lx.
+  // element j at 1 cd/m²: points × columns, lx. `luminance` as the room sees it (the elements
+  // outside at τ times their own); at points outside the room each element's light comes as seen
+  // from there: the elements outside at their own, those inside at τ times theirs.
   Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
+  // The same sum with no regard to the openings' glazing.
+  Eigen::MatrixXd gatherElements(std::span<const SamplePoint> points,
+                                 const Eigen::MatrixXd& luminance);
   // The element-average direct light and the mesh's part of the report, once the mesh is final.
   void finishMesh(const Scene& scene, const HostLight& host, const Eigen::MatrixX3d& nodeDirect,
                   double elementSize, Clock::time_point start);
@@ -101,6 +118,13 @@ class Interreflection {
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
   Eigen::VectorXd sunLuminance_;                // the sun's part of it; empty without a sun
   Eigen::VectorXd sunDirect_;                   // lx, element-average direct sunlight; empty
+  std::vector<char> outside_;  // per element: outside the room (outsideRoom), in a daylit scene
+  bool anyOutside_ = false;    // some element is outside the room
+  // τ of the openings between the elements outside and inside (scene/daylight.hpp,
+  // crossingTransmittance); the room the openings are in (null without one).
+  double crossing_ = 1.0;
+  const Room* room_ = nullptr;
+  double tolerance_ = 0.0;  // m, the scene's length tolerance
   Eigen::MatrixX3d direct_;
   RadiositySolution solution_;
   InterreflectionReport report_;

@@ -271,6 +271,26 @@ std::vector<VisibleArc> boundaryArcs(const Vec3& p, const FaceFrame& frame,
   return arcs;
 }
 
+// The arcs of a polygon nothing hides: its edges, in order, each with the polygon on its left as
+// boundaryArcs orients them, and the same end points (a + 1·(b − a), as boundaryArcs lifts an
+// edge's far end), without testing each edge's sides: one polygon seen past no solid (the sun's
+// disk, a sky patch, an element) is most of the host's work.
+std::vector<VisibleArc> wholeOutline(const Vec3& p, const FaceFrame& frame, const Polygon2& q) {
+  double twiceArea = 0.0;
+  for (std::size_t i = 0; i < q.size(); ++i) twiceArea += cross2(q[i], q[(i + 1) % q.size()]);
+  std::vector<VisibleArc> arcs;
+  arcs.reserve(q.size());
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const Vec2& a = q[i];
+    const Vec2& b = q[(i + 1) % q.size()];
+    if (!((b - a).norm() > 0.0)) continue;
+    Vec3 from = frame.lift(a) - p, to = frame.lift(a + 1.0 * (b - a)) - p;
+    if (twiceArea < 0.0) std::swap(from, to);
+    arcs.push_back({from, to});
+  }
+  return arcs;
+}
+
 }  // namespace
 
 FaceFrame FaceFrame::of(const ConvexPolygon& polygon) {
@@ -318,6 +338,7 @@ std::vector<VisibleArc> visibleBoundary(const ConvexPolygon& face, const FaceFra
     if ((slo.array() > hi.array()).any() || (shi.array() < lo.array()).any()) continue;
     polygons.push_back(std::move(shadow));
   }
+  if (polygons.size() == 1) return wholeOutline(p, frame, polygons[0]);
   return boundaryArcs(p, frame, polygons);
 }
 

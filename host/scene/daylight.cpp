@@ -92,6 +92,11 @@ std::vector<const Opening*> skyOpenings(const Scene& scene) {
   return lit;
 }
 
+bool outsideRoom(const Room& room, const Vec3& p, double tolerance) {
+  const double reach = room.wallThickness - tolerance;
+  return (p.array() <= -reach).any() || (p.array() >= room.size.array() + reach).any();
+}
+
 bool skyOnHost(const Scene& scene) {
   if (!scene.sky || !scene.room) return false;
   if (scene.sky->model == SkyModel::CieGeneral) return true;
@@ -102,7 +107,33 @@ bool skyOnHost(const Scene& scene) {
 }
 
 Scene skyFacesScene(const Scene& scene) {
-  return withSkySources(scene, skyOpenings(scene), scene.bounds().lo.z() - 1.0);
+  const std::vector<const Opening*> openings = skyOpenings(scene);
+  Scene faces = withSkySources(scene, openings, scene.bounds().lo.z() - 1.0);
+  for (const Opening* opening : openings) {
+    std::vector<Vec3> outward(opening->outer.vertices().rbegin(), opening->outer.vertices().rend());
+    Source out;
+    out.name = opening->name + ".outside";
+    out.faces = {ConvexPolygon(std::move(outward))};
+    out.luminance = scene.sky->zenithLuminance();
+    faces.sources.push_back(std::move(out));
+  }
+  return faces;
+}
+
+double crossingTransmittance(const Scene& scene) {
+  const std::vector<const Opening*> openings = skyOpenings(scene);
+  if (openings.empty()) return 1.0;
+  if (std::all_of(openings.begin(), openings.end(), [&](const Opening* o) {
+        return o->transmittance == openings.front()->transmittance;
+      }))
+    return openings.front()->transmittance;
+  double area = 0.0, weighted = 0.0;
+  for (const Opening* opening : openings) {
+    const double a = opening->outer.area();
+    area += a;
+    weighted += a * opening->transmittance;
+  }
+  return area > 0.0 ? weighted / area : 1.0;
 }
 
 Scene daylightScene(const Scene& scene, double height) {

@@ -42,10 +42,22 @@ std::vector<const Opening*> skyOpenings(const Scene& scene);
 // outer box (the interior box grown by the wall's thickness) or a `cie-general` sky (patches).
 bool skyOnHost(const Scene& scene);
 
-// `scene` with a source per sky-lit opening, its whole outer rectangle at the sky's zenith
-// luminance: what the interreflection's mesh takes to find the faces that see an opening,
-// wherever the sky itself is computed.
+// Whether `p` lies outside `room`: not strictly inside its outer box (the interior box grown by
+// the wall's thickness, less `tolerance`). The walls' outer faces and every solid beyond them
+// (an obstruction) are outside; the reveals of an opening and the room's interior are not.
+bool outsideRoom(const Room& room, const Vec3& p, double tolerance);
+
+// `scene` with two sources per sky-lit opening, its whole outer rectangle at the sky's zenith
+// luminance facing into the room and the same rectangle facing out: what the interreflection's
+// mesh takes to find the faces that see an opening, from the room and from outside it (the
+// faces of obstructions that the room sees through its openings), wherever the sky itself is
+// computed.
 Scene skyFacesScene(const Scene& scene);
+
+// The transmittance with which light crosses the openings between the faces outside the room and
+// those inside it (radiosity/interreflection.hpp): the sky-lit openings' τ, their mean weighted
+// by area where they differ; 1 without any.
+double crossingTransmittance(const Scene& scene);
 
 // `scene` with, appended to its sources, a sky source and a ground source per opening lit by
 // the sky (named "<opening>.sky" and "<opening>.ground"), cut at `height` (m). Every height gives

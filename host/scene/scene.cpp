@@ -56,6 +56,18 @@ Vec3 CalculationGrid::normal(std::size_t i) const {
   return kind == GridKind::Points ? normals_[i] : planeNormal_;
 }
 
+std::string skyModelName(SkyModel model) {
+  switch (model) {
+    case SkyModel::Uniform:
+      return "uniform";
+    case SkyModel::CieOvercast:
+      return "cie-overcast";
+    case SkyModel::CieGeneral:
+      return "cie-general";
+  }
+  return "unknown";
+}
+
 double Sky::zenithLuminance() const {
   return model == SkyModel::CieOvercast ? 9.0 * horizontalIlluminance / (7.0 * std::numbers::pi)
                                         : horizontalIlluminance / std::numbers::pi;

@@ -116,6 +116,8 @@ struct Room {
 // `cie-general` is one of the 15 CIE standard general skies (scene/cie_general_sky.hpp) as a sky
 // of patches (illuminance/patch_sky.hpp), scaled so that it gives E_h.
 enum class SkyModel { Uniform, CieOvercast, CieGeneral };
+// The model's name in the scene file: "uniform", "cie-overcast", "cie-general".
+std::string skyModelName(SkyModel model);
 
 struct Sky {
   SkyModel model = SkyModel::CieOvercast;
