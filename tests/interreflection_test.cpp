@@ -130,16 +130,22 @@ TEST(Interreflection, ClosedRoomsConserveEnergy) {
 // the energy balance holds to 1e-4 up to ρ = 0.95.
 TEST(Interreflection, FarFieldTransferKeepsTheBalance) {
   TempDir dir("interreflection");
-  const Scene scene = closedRoom(
-      dir, "[9, 6, 3]",
-      "solids:\n  - {name: desk, box: {min: [1.0, 1.0, 0.72], max: [2.6, 1.8, 0.75]}, material: "
-      "paint}\n  - {name: desk-2, box: {min: [5.0, 3.5, 0.72], max: [6.6, 4.3, 0.75]}, material: "
-      "paint}\n  - {name: cabinet, box: {min: [8.4, 0.0, 0.0], max: [9.0, 1.2, 1.8]}, material: "
-      "paint}\n");
+  // The sanitizer build, where the host's part runs many times slower, takes the smaller
+  // furnished room of ClosedRoomsConserveEnergy: the same assertions on fewer far pairs (a
+  // coarser mesh would miss the balance with every sender at the nodes too).
+  const Scene scene =
+      kSanitizedBuild
+          ? closedRoom(dir, "[5, 4, 3]",
+                       "solids:\n  - {name: desk, box: {min: [1.0, 1.0, 0.72], max: [2.6, 1.8, "
+                       "0.75]}, material: paint}\n  - {name: cabinet, box: {min: [4.4, 0.0, "
+                       "0.0], max: [5.0, 1.2, 1.8]}, material: paint}\n")
+          : closedRoom(dir, "[9, 6, 3]",
+                       "solids:\n  - {name: desk, box: {min: [1.0, 1.0, 0.72], max: [2.6, 1.8, "
+                       "0.75]}, material: paint}\n  - {name: desk-2, box: {min: [5.0, 3.5, "
+                       "0.72], max: [6.6, 4.3, 0.75]}, material: paint}\n  - {name: cabinet, "
+                       "box: {min: [8.4, 0.0, 0.0], max: [9.0, 1.2, 1.8]}, material: paint}\n");
   IlluminanceEngine direct(cpuDevice(), scene);
-  MeshOptions options;
-  if (kSanitizedBuild) options.elementSize = 1.0;
-  const Interreflection solved(cpuDevice(), scene, direct, options);
+  const Interreflection solved(cpuDevice(), scene, direct);
   SurfaceMesh mesh = solved.mesh();
   const Scene elements = elementScene(scene, mesh);
   IlluminanceEngine engine(cpuDevice(), elements);
@@ -151,8 +157,6 @@ TEST(Interreflection, FarFieldTransferKeepsTheBalance) {
     for (Eigen::Index j = 0; j < t.cols(); ++j) far += t(i, j) != exact(i, j) ? 1 : 0;
   std::printf("%zu elements, %zu of %zu pairs far\n", mesh.elements.size(), far,
               static_cast<std::size_t>(t.size()));
-  // The sanitizer build's 1 m elements are near most of the room: the same assertions, on
-  // fewer far pairs.
   if (!kSanitizedBuild) EXPECT_GT(far, static_cast<std::size_t>(t.size()) / 2);
 
   // A row sums to the kernel's E from the whole hemisphere at four points: π to the kernel's
