@@ -283,13 +283,8 @@ double reflectedQuadrature(const Vec3& p, const Vec3& np, double reflectance) {
   }
   if (x1 <= x0 || z1 <= z0) return 0.0;
   std::vector<double> xs{x0, x1, kOuterX0, kOuterX1}, zs{z0, z1, kOuterZ1};
-  const auto within = [](std::vector<double>& cuts, double lo, double hi) {
-    for (double& c : cuts) c = std::clamp(c, lo, hi);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  };
-  within(xs, x0, x1);
-  within(zs, z0, z1);
+  testing::piecesWithin(xs, x0, x1);
+  testing::piecesWithin(zs, z0, z1);
   double e = 0.0;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i)
     for (std::size_t j = 0; j + 1 < zs.size(); ++j) {

@@ -123,13 +123,8 @@ double quadratureE(const Sky& sky, const SamplePoint& point, const std::vector<B
       zs.insert(zs.end(), {b.lo.z(), b.hi.z()});
       xs.insert(xs.end(), {b.lo.x(), b.hi.x()});
     }
-  const auto within = [](std::vector<double>& cuts, double lo, double hi) {
-    for (double& c : cuts) c = std::clamp(c, lo, hi);
-    std::sort(cuts.begin(), cuts.end());
-    cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
-  };
-  within(xs, x0, x1);
-  within(zs, z0, z1);
+  testing::piecesWithin(xs, x0, x1);
+  testing::piecesWithin(zs, z0, z1);
   const double lz = sky.zenithLuminance(), lg = sky.groundLuminance();
   double e = 0.0;
   for (std::size_t i = 0; i + 1 < xs.size(); ++i)

@@ -29,6 +29,14 @@ struct WallWindow {
 struct IntervalRule {
   std::vector<double> x, w;
 };
+// The cuts of a piecewise-smooth integrand on [lo, hi]: clamped into it, sorted, repeats removed,
+// so that consecutive cuts bound the pieces a rule integrates one at a time.
+inline void piecesWithin(std::vector<double>& cuts, double lo, double hi) {
+  for (double& c : cuts) c = std::clamp(c, lo, hi);
+  std::sort(cuts.begin(), cuts.end());
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+}
+
 inline IntervalRule gaussLegendreOn(int n, double a, double b) {
   const GaussRule unit = gaussLegendre01(n);
   IntervalRule r;
