@@ -182,6 +182,67 @@ charts: false
   EXPECT_GT(means[1], means[0]);
 }
 
+// With interreflection the daylight factor's mean comes with its components: SC + ERC + IRC =
+// DFavg in every row (to the digits written), each equal to what `penumbra grid` writes in
+// summary.json for the case run alone and to what case.json keeps for rebuilding the table.
+// A grey room behind the window and a white slab outside in front of it, so that every component
+// has light; 1 m elements: cheap.
+TEST(SweepCli, WithInterreflectionTheDaylightComponentsAddUpAndEqualTheGridRuns) {
+  TempDir dir("penumbra-sweep-cli");
+  write(dir.path() / "scene.yaml", R"(penumbra: 1
+parameters: {width: 1.0}
+materials: {grey: 0.5, white: 0.8}
+sky: {model: cie-overcast, horizontal_illuminance_lx: 10000}
+room:
+  size: [4, 4, 3]
+  materials: {floor: grey, ceiling: grey, walls: grey}
+  openings:
+    - {name: w, wall: y0, x: "${2 - width/2}", z: 0.9, width: "${width}", height: 1.5}
+solids:
+  - {name: slab, box: {min: [-4, -6, 0], max: [8, -5, 6]}, material: white}
+grids:
+  - {name: reference-plane, height: 0.85, spacing: 0.5, margin: 0.5}
+)");
+  write(dir.path() / "study.yaml", R"(penumbra-study: 1
+scene: scene.yaml
+parameters:
+  width: [1.0, 3.0]
+charts: false
+)");
+  const std::string options = " --device cpu --element-size 1";
+  const Result sweep = runPenumbra(dir.path(), "sweep study.yaml -o out" + options);
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const auto rows = csvRows(dir.path() / "out" / "results.csv");
+  ASSERT_EQ(rows.size(), 3u);
+  const std::vector<std::string> header{
+      "case_id",   "width",     "Eavg_lx",      "Emin_lx",   "Emax_lx",    "U0",        "Ud",
+      "DFavg_pct", "DFmin_pct", "DFmedian_pct", "SCavg_pct", "ERCavg_pct", "IRCavg_pct"};
+  ASSERT_EQ(rows[0], header);
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    SCOPED_TRACE(row[0]);
+    const double mean = std::stod(row[7]), sc = std::stod(row[10]), erc = std::stod(row[11]),
+                 irc = std::stod(row[12]);
+    EXPECT_GT(sc, 0.0);
+    EXPECT_GT(erc, 0.0);
+    EXPECT_GT(irc, 0.0);
+    EXPECT_NEAR(sc + erc + irc, mean, 1e-12 * mean);
+    const std::string alone = "alone-" + row[0];
+    const Result grid = runPenumbra(
+        dir.path(), "grid scene.yaml -o " + alone + options + " -q --set width=" + row[1]);
+    ASSERT_EQ(grid.status, 0) << grid.err;
+    const auto summary = nlohmann::json::parse(readText(dir.path() / alone / "summary.json"));
+    const auto& df = summary["grids"][0]["daylight_factor"];
+    const auto record =
+        nlohmann::json::parse(readText(dir.path() / "out" / "cases" / row[0] / "case.json"));
+    for (const auto& [column, key] :
+         {std::pair{10, "SCavg_pct"}, {11, "ERCavg_pct"}, {12, "IRCavg_pct"}}) {
+      EXPECT_EQ(row[column], fmt::format("{}", df[key].get<double>())) << key;
+      EXPECT_EQ(record["grids"][0][key], df[key]) << key;
+    }
+  }
+}
+
 TEST(SweepCli, SunColumnsEqualTheGridRunsSunlight) {
   TempDir dir("penumbra-sweep-cli");
   // The window faces south at north_deg 0 and west at 90; at 10:30 the sun is south-east.

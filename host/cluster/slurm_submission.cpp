@@ -162,7 +162,8 @@ int shardCount(const SlurmSettings& settings, const std::optional<Submitted>& pr
 SlurmSubmission submitToSlurm(const Study& study, const SlurmSettings& settings) {
   // The plan the shards will run: validates every case before anything is written or submitted.
   const StudyPlan plan =
-      planStudy(study, estimatorIdentity(settings.estimator), requestedCaseOutputs(study));
+      planStudy(study, estimatorIdentity(settings.estimator), requestedCaseOutputs(study),
+                settings.estimator.interreflection && !settings.estimator.reference);
   const fs::path out = normalizedTarget(settings.output);
   checkOutputTarget(out);
   const std::optional<Submitted> previous = readSubmitted(out);

@@ -154,6 +154,9 @@ CaseRecord caseRecordFromJson(const Json& json, const std::filesystem::path& fil
       grid.daylight.mean = optionalColumn(StudyMetric::DFavg);
       grid.daylight.min = optionalColumn(StudyMetric::DFmin);
       grid.daylight.median = optionalColumn(StudyMetric::DFmedian);
+      grid.daylight.sky = optionalColumn(StudyMetric::SCavg);
+      grid.daylight.externallyReflected = optionalColumn(StudyMetric::ERCavg);
+      grid.daylight.internallyReflected = optionalColumn(StudyMetric::IRCavg);
       grid.daylight.level = optionalColumn(StudyMetric::EN17037);
       grid.sun.eAvg = optionalColumn(StudyMetric::EsunAvg);
       grid.sun.eMax = optionalColumn(StudyMetric::EsunMax);

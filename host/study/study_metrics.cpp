@@ -14,6 +14,9 @@ const std::vector<StudyMetricInfo>& studyMetrics() {
       {StudyMetric::DFavg, "DFavg", "%", "DFavg_pct", MetricNeeds::Sky},
       {StudyMetric::DFmin, "DFmin", "%", "DFmin_pct", MetricNeeds::Sky},
       {StudyMetric::DFmedian, "DFmedian", "%", "DFmedian_pct", MetricNeeds::Sky},
+      {StudyMetric::SCavg, "SCavg", "%", "SCavg_pct", MetricNeeds::Components},
+      {StudyMetric::ERCavg, "ERCavg", "%", "ERCavg_pct", MetricNeeds::Components},
+      {StudyMetric::IRCavg, "IRCavg", "%", "IRCavg_pct", MetricNeeds::Components},
       // 0 none, 1 minimum, 2 medium, 3 high (CaseDaylight::level).
       {StudyMetric::EN17037, "EN17037_level", "", "EN17037_level", MetricNeeds::Sky},
       {StudyMetric::EsunAvg, "Esun_avg", "lx", "Esun_avg_lx", MetricNeeds::Sun},
@@ -41,6 +44,11 @@ CaseDaylight caseDaylight(const DaylightMetrics& daylight) {
   d.mean = daylight.mean;
   d.min = daylight.min;
   d.median = daylight.median;
+  if (daylight.components) {
+    d.sky = daylight.components->sky;
+    d.externallyReflected = daylight.components->externallyReflected;
+    d.internallyReflected = daylight.components->internallyReflected;
+  }
   if (daylight.provision) {
     d.level = 0.0;
     for (std::size_t k = 0; k < daylight.provision->levels.size(); ++k)
@@ -74,6 +82,12 @@ double metricValue(const CaseGridFigures& figures, StudyMetric metric) {
       return daylight.min;
     case StudyMetric::DFmedian:
       return daylight.median;
+    case StudyMetric::SCavg:
+      return daylight.sky;
+    case StudyMetric::ERCavg:
+      return daylight.externallyReflected;
+    case StudyMetric::IRCavg:
+      return daylight.internallyReflected;
     case StudyMetric::EN17037:
       return daylight.level;
     case StudyMetric::EsunAvg:

@@ -22,14 +22,18 @@ enum class StudyMetric {
   DFavg,
   DFmin,
   DFmedian,
+  SCavg,
+  ERCavg,
+  IRCavg,
   EN17037,
   EsunAvg,
   EsunMax,
   SunlitShare
 };
 
-// What the scene needs for a metric to have a value.
-enum class MetricNeeds { Nothing, Sky, Sun };
+// What the scene needs for a metric to have a value: Components a sky and interreflection (the
+// daylight factor's split into SC, ERC and IRC, grid_metrics.hpp).
+enum class MetricNeeds { Nothing, Sky, Sun, Components };
 
 struct StudyMetricInfo {
   StudyMetric metric;
@@ -45,6 +49,10 @@ struct CaseDaylight {
   double mean = std::numeric_limits<double>::quiet_NaN();    // %: DFavg
   double min = std::numeric_limits<double>::quiet_NaN();     // %: DFmin
   double median = std::numeric_limits<double>::quiet_NaN();  // %: DFmedian
+  // %: the mean's components SCavg, ERCavg, IRCavg; NaN without interreflection.
+  double sky = std::numeric_limits<double>::quiet_NaN();
+  double externallyReflected = std::numeric_limits<double>::quiet_NaN();
+  double internallyReflected = std::numeric_limits<double>::quiet_NaN();
   // The EN 17037 daylight provision reached: 0 none, 1 minimum, 2 medium, 3 high.
   double level = std::numeric_limits<double>::quiet_NaN();
 };

@@ -45,7 +45,7 @@ Scene loadCaseScene(const Study& study, const PlannedCase& planned) {
 }
 
 StudyPlan planStudy(const Study& study, const std::string& estimator,
-                    const std::vector<std::string>& caseOutputs) {
+                    const std::vector<std::string>& caseOutputs, bool interreflected) {
   StudyPlan plan;
   plan.study = study;
   StudyLayout& layout = plan.layout;
@@ -65,12 +65,14 @@ StudyPlan planStudy(const Study& study, const std::string& estimator,
         layout.grids.push_back(g->name);
       if (!study.metricsGiven) {
         // The daylight metrics with a sky (the EN 17037 level also needs the site's median
-        // diffuse illuminance), the sun's with a sun.
+        // diffuse illuminance, the components interreflection), the sun's with a sun.
         const bool verdict = scene.site && scene.site->medianDiffuseIlluminance;
         for (const StudyMetricInfo& info : studyMetrics()) {
-          const bool given = (info.needs == MetricNeeds::Sky && scene.sky &&
-                              (info.metric != StudyMetric::EN17037 || verdict)) ||
-                             (info.needs == MetricNeeds::Sun && scene.sun);
+          const bool given =
+              (info.needs == MetricNeeds::Sky && scene.sky &&
+               (info.metric != StudyMetric::EN17037 || verdict)) ||
+              (info.needs == MetricNeeds::Components && scene.sky && interreflected) ||
+              (info.needs == MetricNeeds::Sun && scene.sun);
           if (given) layout.metrics.push_back(info.metric);
         }
       }

@@ -21,11 +21,13 @@ struct StudyPlan {
 std::string estimatorIdentity(const EstimatorOptions& options);
 
 // `estimator` is "kernel" or "reference n=<n>"; `caseOutputs` the per-case outputs that will be
-// written (case_output.hpp: "plots"), which are part of every case's fingerprint.
+// written (case_output.hpp: "plots"), which are part of every case's fingerprint;
+// `interreflected` whether E includes the interreflected light (the daylight factor's components
+// are then among the default metrics of a scene with a sky).
 // Throws SceneError: a case whose scene is invalid (naming the case, its values and the scene's
 // file:line:key), or a grid in `grids:` that the scene does not have.
 StudyPlan planStudy(const Study& study, const std::string& estimator,
-                    const std::vector<std::string>& caseOutputs);
+                    const std::vector<std::string>& caseOutputs, bool interreflected = false);
 
 // The scene of one case, with the same error as planStudy.
 Scene loadCaseScene(const Study& study, const PlannedCase& planned);

@@ -145,7 +145,9 @@ SweepSummary runSweep(const Study& study, const SweepSettings& settings, SweepOb
   // the cases were computed without them, and a later run that can write them redoes the cases.
   const std::vector<CaseOutputWriter*> outputs =
       chooseCaseOutputs(study, settings, summary.outputNotes);
-  const StudyPlan plan = planStudy(study, estimatorIdentity(settings.estimator), namesOf(outputs));
+  const StudyPlan plan =
+      planStudy(study, estimatorIdentity(settings.estimator), namesOf(outputs),
+                settings.estimator.interreflection && !settings.estimator.reference);
   const StudyLayout& layout = plan.layout;
   checkOutputTarget(settings.output);
   checkResume(settings, layout);
