@@ -128,6 +128,14 @@ TEST(SweepCli, EveryCaseEqualsAGridRunOnItAlone) {
   }
 }
 
+// The window of the daylight tests' scene.yaml at 1 and 3 m.
+constexpr const char* kWindowWidthStudy = R"(penumbra-study: 1
+scene: scene.yaml
+parameters:
+  width: [1.0, 3.0]
+charts: false
+)";
+
 // A scene with a sky: the daylight factor columns (and the EN 17037 level, the site giving
 // E_v,d,med) per case, each equal to what `penumbra grid` writes in summary.json for the case run
 // alone; a wider window gives a higher mean DF. Direct only, a coarse grid: cheap.
@@ -144,12 +152,7 @@ room:
 grids:
   - {name: reference-plane, height: 0.85, spacing: 0.5, margin: 0.5}
 )");
-  write(dir.path() / "study.yaml", R"(penumbra-study: 1
-scene: scene.yaml
-parameters:
-  width: [1.0, 3.0]
-charts: false
-)");
+  write(dir.path() / "study.yaml", kWindowWidthStudy);
   const Result sweep =
       runPenumbra(dir.path(), "sweep study.yaml -o out --device cpu --direct-only");
   ASSERT_EQ(sweep.status, 0) << sweep.err;
@@ -203,12 +206,7 @@ solids:
 grids:
   - {name: reference-plane, height: 0.85, spacing: 0.5, margin: 0.5}
 )");
-  write(dir.path() / "study.yaml", R"(penumbra-study: 1
-scene: scene.yaml
-parameters:
-  width: [1.0, 3.0]
-charts: false
-)");
+  write(dir.path() / "study.yaml", kWindowWidthStudy);
   const std::string options = " --device cpu --element-size 1";
   const Result sweep = runPenumbra(dir.path(), "sweep study.yaml -o out" + options);
   ASSERT_EQ(sweep.status, 0) << sweep.err;
