@@ -73,6 +73,8 @@ int main(int argc, char** argv) {
       deviceSpec = argv[++i];
     else if (!std::strcmp(argv[i], "--view"))
       only = argv[++i];
+    else if (!std::strcmp(argv[i], "--scene"))
+      sceneFile = argv[++i];
     else if (!std::strcmp(argv[i], "--k"))
       k = std::stoi(argv[++i]);
     else if (!std::strcmp(argv[i], "--repeat"))

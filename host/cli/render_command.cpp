@@ -51,11 +51,6 @@ int run(const RenderCommandOptions& options) {
   checkOutputTarget(options.output);
   const Scene scene = loadScene(options.scene, options.parameters);
   if (!options.quiet) printSceneWarnings(scene);
-  if (scene.sky && !options.quiet)
-    fmt::print(stderr,
-               "penumbra: {}: the sky is not rendered: renders show the scene's sources and "
-               "luminaires only (`penumbra grid` computes the daylight)\n",
-               options.scene.string());
   const std::vector<const View*> views = selectViews(scene, options);
 
   const EstimatorOptions& estimator = options.estimator;

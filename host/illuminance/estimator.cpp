@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "engine/daylight_evaluation.hpp"
+#include "illuminance/host_daylight.hpp"
 #include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
 #include "reference/reference_illuminance.hpp"
@@ -43,16 +44,9 @@ Estimator::Estimator(const EstimatorOptions& options, const Scene& scene) : scen
 void Estimator::solveInterreflection() {
   interreflection_.reset();
   if (withInterreflection_) {
-    HostLight host;
-    const Scene* scene = scene_;
-    if (skyOnHost(*scene_))
-      host.sky = [scene](std::span<const SamplePoint> points) {
-        return surfaceSkylight(*scene, points);
-      };
-    if (scene_->sun)
-      host.sun = [scene](std::span<const SamplePoint> points) { return sunlight(*scene, points); };
-    interreflection_ = std::make_unique<Interreflection>(
-        *clDevice_, *scene_, *engine_, mesh_, EngineOptions{culling_}, &transferCache_, host);
+    interreflection_ = std::make_unique<Interreflection>(*clDevice_, *scene_, *engine_, mesh_,
+                                                         EngineOptions{culling_}, &transferCache_,
+                                                         hostDaylight(*scene_));
   }
 }
 

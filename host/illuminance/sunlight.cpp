@@ -32,6 +32,13 @@ double tunnelTransmittance(const Room& room, const Vec3& p, double tolerance) {
   return 1.0;
 }
 
+// Whether some vertex of `polygon` lies in front of the point's tangent plane.
+bool abovePlane(const ConvexPolygon& polygon, const SamplePoint& point) {
+  for (const Vec3& v : polygon.vertices())
+    if (point.normal.dot(v - point.position) > 0.0) return true;
+  return false;
+}
+
 }  // namespace
 
 ConvexPolygon sunPolygon(const Vec3& point, const Vec3& direction, double distance) {
@@ -60,33 +67,41 @@ double sunLuminance(double directNormalIlluminance) {
   return directNormalIlluminance / projected;
 }
 
-std::vector<double> sunlight(const Scene& scene, std::span<const SamplePoint> points) {
+std::vector<double> sunlight(const Scene& scene, std::span<const SamplePoint> points,
+                             std::vector<char>* beam) {
   std::vector<double> e(points.size(), 0.0);
+  if (beam) beam->assign(points.size(), 0);
   if (!scene.sun || !scene.sun->aboveHorizon()) return e;
   const Sun& sun = *scene.sun;
   const double luminance = sunLuminance(sun.directNormalIlluminance);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   const FarPlacement placement = FarPlacement::of(scene);
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, points.size(), 16),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i) {
-          const SamplePoint& point = points[i];
-          const ConvexPolygon disk =
-              sunPolygon(point.position, sun.direction, placement.distance(point.position));
-          double sum = 0.0;
-          if (scene.room && insideRoom(*scene.room, point.position, tolerance)) {
-            for (const Opening& opening : scene.room->openings)
-              sum += opening.transmittance *
-                     visibleProjectedSolidAngle(throughHole(disk, point.position, opening.outer),
-                                                point, scene, tolerance);
-          } else {
-            sum = visibleProjectedSolidAngle(disk, point, scene, tolerance);
-            if (scene.room) sum *= tunnelTransmittance(*scene.room, point.position, tolerance);
-          }
-          e[i] = luminance * sum;
-        }
-      });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, points.size(), 16),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t i = r.begin(); i < r.end(); ++i) {
+                        const SamplePoint& point = points[i];
+                        const ConvexPolygon disk = sunPolygon(point.position, sun.direction,
+                                                              placement.distance(point.position));
+                        double sum = 0.0;
+                        bool inBeam = false;
+                        if (scene.room && insideRoom(*scene.room, point.position, tolerance)) {
+                          for (const Opening& opening : scene.room->openings) {
+                            const ConvexPolygon through =
+                                throughHole(disk, point.position, opening.outer);
+                            inBeam = inBeam || abovePlane(through, point);
+                            sum += opening.transmittance *
+                                   visibleProjectedSolidAngle(through, point, scene, tolerance);
+                          }
+                        } else {
+                          inBeam = abovePlane(disk, point);
+                          sum = visibleProjectedSolidAngle(disk, point, scene, tolerance);
+                          if (scene.room)
+                            sum *= tunnelTransmittance(*scene.room, point.position, tolerance);
+                        }
+                        e[i] = luminance * sum;
+                        if (beam) (*beam)[i] = inBeam;
+                      }
+                    });
   return e;
 }
 

@@ -36,7 +36,11 @@ ConvexPolygon sunPolygon(const Vec3& point, const Vec3& direction, double distan
 // unobstructed plane facing the sun.
 double sunLuminance(double directNormalIlluminance);
 
-// E_sun in lx at every point; zeros without a sun or with the sun below the horizon.
-std::vector<double> sunlight(const Scene& scene, std::span<const SamplePoint> points);
+// E_sun in lx at every point; zeros without a sun or with the sun below the horizon. With
+// `beam`, also per point whether it lies in the sun's beam before the solids are counted: some
+// of the disk above its horizon is seen through an opening (a point inside the room) or at all
+// (a point elsewhere); 0 where the sun cannot reach it whatever stands in the room.
+std::vector<double> sunlight(const Scene& scene, std::span<const SamplePoint> points,
+                             std::vector<char>* beam = nullptr);
 
 }  // namespace penumbra

@@ -306,6 +306,7 @@ void Interreflection::finishMesh(const Scene& scene, const HostLight& host,
 }
 
 void Interreflection::addSun(const Eigen::MatrixX3d& luminance) {
+  sunChannels_ = luminance;
   sunLuminance_ = photometricRows(luminance);
 }
 
@@ -403,7 +404,9 @@ InterreflectedIlluminance Interreflection::indirectParts(std::span<const SampleP
 
 std::vector<Eigen::Vector3d> Interreflection::indirectChannels(
     std::span<const SamplePoint> points) {
-  const Eigen::MatrixXd e = gather(points, solution_.luminance);
+  Eigen::MatrixXd luminance = solution_.luminance;
+  if (sunChannels_.rows() > 0) luminance += sunChannels_;
+  const Eigen::MatrixXd e = gather(points, luminance);
   std::vector<Eigen::Vector3d> channels(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
     channels[p] = e.row(static_cast<Eigen::Index>(p)).transpose();

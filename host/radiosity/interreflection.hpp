@@ -81,8 +81,8 @@ class Interreflection {
   InterreflectedIlluminance indirectParts(std::span<const SamplePoint> points);
   // Interreflected E per RGB channel at each point (lx; L = ρ_c·E_c/π as for a source's
   // colour), from the same gather: each element's part weighted by its solved luminance in that
-  // channel. The sun's part is left out (renders do not draw the sun yet); without a sun the
-  // photometric sum of the channels is indirect() to double rounding.
+  // channel, the sun's included: the photometric sum of the channels is indirect() to double
+  // rounding.
   std::vector<Eigen::Vector3d> indirectChannels(std::span<const SamplePoint> points);
 
   const SurfaceMesh& mesh() const { return mesh_; }
@@ -106,7 +106,7 @@ class Interreflection {
   // The element-average direct light and the mesh's part of the report, once the mesh is final.
   void finishMesh(const Scene& scene, const HostLight& host, const Eigen::MatrixX3d& nodeDirect,
                   double elementSize, Clock::time_point start);
-  // Keeps the photometric luminance of the sun's solution (solved alone).
+  // Keeps the luminance of the sun's solution (solved alone), per channel and photometric.
   void addSun(const Eigen::MatrixX3d& luminance);
   // The constructor's work with hierarchical links (MeshOptions::linkError > 0).
   void solveHierarchically(compute::Device& device, const Scene& scene, IlluminanceEngine& direct,
@@ -117,6 +117,7 @@ class Interreflection {
   std::shared_ptr<GeometryTransfer> geometry_;  // null when there are no elements
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
   Eigen::VectorXd sunLuminance_;                // the sun's part of it; empty without a sun
+  Eigen::MatrixX3d sunChannels_;                // the same per channel
   Eigen::VectorXd sunDirect_;                   // lx, element-average direct sunlight; empty
   std::vector<char> outside_;  // per element: outside the room (outsideRoom), in a daylit scene
   bool anyOutside_ = false;    // some element is outside the room

@@ -7,9 +7,14 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "geometry/angles.hpp"
+#include "illuminance/host_daylight.hpp"
+#include "illuminance/skylight.hpp"
+#include "illuminance/sunlight.hpp"
 #include "render/camera.hpp"
 #include "render/indirect_sampling.hpp"
 #include "render/interval_sampling.hpp"
+#include "render/sky_background.hpp"
 #include "render/visibility_engine.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -26,6 +31,22 @@ struct SampleLayer {
   std::vector<float> illuminance;  // lx
   std::vector<float> rgb;          // cd/m², 3 per sample
 };
+
+// The sun's shadow class at a point from its sunlight `e` (lx): lit where it gets the whole
+// disk's E_dn·cos θ times the transmittance of one glazing (or of none) to within 1e-6 of that;
+// umbra where the sun cannot reach it whatever stands in the room (out of the beam through the
+// openings: sunlight's `beam`); penumbra elsewhere, in the patch's penumbra and in the shadows
+// that solids cast inside the beam, so that the interval plan looks between such samples for
+// a sliver of sun and never interpolates across a sun patch's edge. `full` is E_dn·cos θ, 0
+// where the disk is not wholly above the point's horizon (there any sunlight is penumbra).
+ShadowClass sunShadowClass(double e, bool inBeam, double full,
+                           const std::vector<double>& transmittances) {
+  if (!inBeam) return ShadowClass::Umbra;
+  if (e <= 0.0) return ShadowClass::Penumbra;
+  for (const double tau : transmittances)
+    if (std::abs(e - tau * full) <= 1e-6 * full) return ShadowClass::Lit;
+  return ShadowClass::Penumbra;
+}
 
 }  // namespace
 
@@ -45,17 +66,34 @@ struct Renderer::State {
   TransferCache transfers;          // kept across setScene: a sweep's cases share transfers
   std::vector<Vec3> sourceColours;  // luminanceColour per source
   std::vector<Vec3> solidReflectance;
+  SkyBackground background;            // what rays that meet no solid show
+  std::vector<double> transmittances;  // 1 and each opening's τ: the sun's lit levels
 
   State(compute::Device& d, const Scene& s, EngineOptions e, std::optional<MeshOptions> m)
-      : device(&d), scene(&s), engine(e), illuminance(d, s, e), visibility(d, s), mesh(m) {
+      : device(&d),
+        scene(&s),
+        engine(e),
+        illuminance(d, s, e),
+        visibility(d, s),
+        mesh(m),
+        background(s) {
     prepare();
   }
 
   void prepare() {
     interreflection.reset();
-    if (mesh)
+    if (mesh) {
       interreflection = std::make_unique<Interreflection>(*device, *scene, illuminance, *mesh,
-                                                          engine, &transfers);
+                                                          engine, &transfers, hostDaylight(*scene));
+      // The mesh's direct light leaves the engine on a scene with the sky's sources cut at
+      // some height (engine/daylight_evaluation.hpp); the samples take the sky on the host.
+      if (scene->sky) illuminance.setScene(*scene);
+    }
+    background = SkyBackground(*scene);
+    transmittances = {1.0};
+    if (scene->room)
+      for (const Opening& opening : scene->room->openings)
+        transmittances.push_back(opening.transmittance);
     sourceColours.clear();
     for (const Source& source : scene->sources)
       sourceColours.push_back(luminanceColour(source.color));
@@ -77,12 +115,13 @@ struct Renderer::State {
 
   // The interval plan's shadow classes per sample: one per source, then one per placed
   // luminaire (LuminaireEngine::Result::shadow: the point model Lit where the sample sees its
-  // centre, Umbra where not; the area model its opening's class), so that a luminaire's shadow
-  // edge is never interpolated across.
+  // centre, Umbra where not; the area model its opening's class), then the sun's
+  // (sunShadowClass), so that no shadow edge is interpolated across. The sky has none: its
+  // shadows are soft, and the plan's checks of the values decide there.
   int classColumns() const {
     int columns = static_cast<int>(scene->sources.size());
     for (const Luminaire& l : scene->luminaires) columns += static_cast<int>(l.instances.size());
-    return columns;
+    return columns + (scene->sun ? 1 : 0);
   }
 
   // Exact illuminance and luminance at `indices` (in batches of kBatch), and each one's shadow
@@ -100,6 +139,14 @@ struct Renderer::State {
       for (std::size_t j = start; j < end; ++j)
         points.push_back(surfacePoint(camera, layer.visibility, indices[j]));
       const IlluminanceResult result = illuminance.evaluate(points, true);
+      // The daylight on the host, exact in double past every solid: the sky and the ground
+      // (outside the room, on an obstruction's faces, the whole sky in front of the point), the
+      // sun. White.
+      const std::vector<double> sky =
+          scene->sky ? surfaceSkylight(*scene, points) : std::vector<double>();
+      std::vector<char> beam;
+      const std::vector<double> sun =
+          scene->sun ? sunlight(*scene, points, &beam) : std::vector<double>();
       for (std::size_t j = start; j < end; ++j) {
         const std::size_t i = indices[j], local = j - start;
         const Vec3& rho = solidReflectance[points[local].solid];
@@ -115,8 +162,24 @@ struct Renderer::State {
               result.luminaireShadow[local * result.luminaireCount + l];
         }
         if (!result.luminaires.empty()) light += Vec3::Constant(result.luminaires[local]);
+        double e = result.illuminance[local];
+        if (!sky.empty()) {
+          e += sky[local];
+          light += Vec3::Constant(sky[local]);
+        }
+        if (!sun.empty()) {
+          e += sun[local];
+          light += Vec3::Constant(sun[local]);
+          const Sun& solar = *scene->sun;
+          const double cosine = points[local].normal.dot(solar.direction.normalized());
+          const double full = cosine >= std::sin(0.5 * kSunDiameterDegrees * kRadiansPerDegree)
+                                  ? solar.directNormalIlluminance * cosine
+                                  : 0.0;
+          classes[i * columns + columns - 1] =
+              sunShadowClass(sun[local], beam[local] != 0, full, transmittances);
+        }
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
-        layer.illuminance[i] = static_cast<float>(result.illuminance[local]);
+        layer.illuminance[i] = static_cast<float>(e);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
       }
       done(end - start);
@@ -181,7 +244,15 @@ struct Renderer::State {
     std::size_t surface = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t id = layer.visibility.faceIds[i];
-      if (id == FaceIdImage::kNoSurface) continue;
+      if (id == FaceIdImage::kNoSurface) {
+        if (background.lit()) {
+          const int x = static_cast<int>(i % camera.width), y = static_cast<int>(i / camera.width);
+          const float l = static_cast<float>(
+              background.luminance(camera.eye, camera.direction(x, y).normalized()));
+          for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = l;
+        }
+        continue;
+      }
       const VisibleFace& face = visibility.visible().face(id);
       if (face.isSource) {
         const Source& source = scene->sources[face.index];
