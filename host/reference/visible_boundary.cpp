@@ -210,6 +210,43 @@ bool separated(const ConvexPolyhedron& solid, const Pyramid& pyramid, double tol
   return false;
 }
 
+// +1 for a counter-clockwise polygon, −1 for a clockwise one.
+double orientationOf(const Polygon2& q) {
+  double twiceArea = 0.0;
+  for (std::size_t i = 0; i < q.size(); ++i) twiceArea += cross2(q[i], q[(i + 1) % q.size()]);
+  return twiceArea < 0.0 ? -1.0 : 1.0;
+}
+
+// Whether some edge of the convex polygon q has every point of `others` on its outer side or
+// within `within` of its line.
+bool edgeSeparates(const Polygon2& q, const Polygon2& others, double within) {
+  const double inward = orientationOf(q);
+  for (std::size_t i = 0; i < q.size(); ++i) {
+    const bool allOut = std::none_of(others.begin(), others.end(), [&](const Vec2& x) {
+      return inward * edgeDistance(q, i, x) > within;
+    });
+    if (allOut) return true;
+  }
+  return false;
+}
+
+// Whether two convex polygons share no area (to within `within`): a shadow that touches the face
+// only along its boundary, as the reveals of an opening the face was cut to do, hides nothing,
+// and leaving it out spares boundaryArcs its edges.
+bool apart(const Polygon2& a, const Polygon2& b, double within) {
+  return edgeSeparates(a, b, within) || edgeSeparates(b, a, within);
+}
+
+// Whether every vertex of `inner` lies inside the convex polygon `outer`: a shadow that covers
+// the whole face.
+bool covers(const Polygon2& outer, const Polygon2& inner) {
+  const double inward = orientationOf(outer);
+  for (std::size_t i = 0; i < outer.size(); ++i)
+    for (const Vec2& x : inner)
+      if (inward * edgeDistance(outer, i, x) <= 0.0) return false;
+  return true;
+}
+
 // The 2-D bounding box of a polygon: {lo, hi}.
 std::pair<Vec2, Vec2> boundsOf(const Polygon2& q) {
   Vec2 lo = q[0], hi = lo;
@@ -325,6 +362,8 @@ std::vector<VisibleArc> visibleBoundary(const ConvexPolygon& face, const FaceFra
   if (polygons[0].size() < 3) return {};
   const Pyramid pyramid = pyramidOf(p, lit.vertices(), centre - p);
   const auto [lo, hi] = boundsOf(polygons[0]);
+  // What counts as on an edge, as boundaryArcs' hair (1e-9 of the face's size).
+  const double hair = 1e-9 * (hi - lo).norm();
   const Vec2 margin = hi - lo;
   const Polygon2 bound = {lo - margin, Vec2(hi.x() + margin.x(), lo.y() - margin.y()), hi + margin,
                           Vec2(lo.x() - margin.x(), hi.y() + margin.y())};
@@ -336,6 +375,8 @@ std::vector<VisibleArc> visibleBoundary(const ConvexPolygon& face, const FaceFra
     if (shadow.empty()) continue;
     const auto [slo, shi] = boundsOf(shadow);
     if ((slo.array() > hi.array()).any() || (shi.array() < lo.array()).any()) continue;
+    if (apart(polygons[0], shadow, hair)) continue;
+    if (covers(shadow, polygons[0])) return {};
     polygons.push_back(std::move(shadow));
   }
   if (polygons.size() == 1) return wholeOutline(p, frame, polygons[0]);
