@@ -75,5 +75,36 @@ TEST(DisplaySpaces, DeviceImageIsTheThesisHsvRoundTripWithTheNewV) {
   }
 }
 
+// A daylit view: the room's surfaces (face ids) between 2 and 300 cd/m², the sky through the
+// window at 2 000 cd/m² and the sun's disk at 6.3e8 cd/m² (no face). The surfaces keep the range
+// they have without the background (Space 1 over [2, 300]), and
+// the background above it shows V = 1: white, not a room crushed to black by the sun.
+TEST(DisplaySpaces, WhatTheWindowShowsDoesNotSetTheRoomsRange) {
+  RgbImage hdr(4, 1);
+  FaceIdImage faces(4, 1);
+  const float luminance[4] = {2.0f, 300.0f, 2000.0f, 6.3e8f};
+  for (int i = 0; i < 4; ++i)
+    for (int c = 0; c < 3; ++c) hdr.rgb[i * 3 + c] = luminance[i];
+  faces.ids[0] = 1;
+  faces.ids[1] = 2;
+  const double black = 0.05;
+  const DisplaySpaces room = displaySpaces(hdr, black, &faces);
+  EXPECT_DOUBLE_EQ(room.maxRgb, 300.0);
+  EXPECT_FLOAT_EQ(room.value1[0], 0.0f);
+  EXPECT_FLOAT_EQ(room.value1[1], 1.0f);
+  EXPECT_FLOAT_EQ(room.value1[2], 1.0f);
+  EXPECT_FLOAT_EQ(room.value3[3], 1.0f);
+  ScalarImage display(4, 1);
+  display.values = room.value3;
+  const DisplayImage device = deviceImage(hdr, room, display);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_EQ(device.values[2 * 3 + c], 255);
+    EXPECT_EQ(device.values[3 * 3 + c], 255);
+  }
+  // Without the face ids the sun sets the range and the room is black to within 1e-6.
+  const DisplaySpaces whole = displaySpaces(hdr, black);
+  EXPECT_LT(whole.value1[1], 1e-6);
+}
+
 }  // namespace
 }  // namespace penumbra

@@ -19,7 +19,7 @@ float boundedDisplayValue(double value, double lowerBound) {
   return v;
 }
 
-DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound) {
+DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound, const FaceIdImage* faces) {
   if (!(lowerBound > 0 && lowerBound < 1)) {
     throw std::invalid_argument("the display's black level must lie in (0, 1)");
   }
@@ -28,10 +28,15 @@ DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound) {
   spaces.height = hdr.height;
   spaces.lowerBound = lowerBound;
   const size_t count = static_cast<size_t>(hdr.width) * hdr.height;
+  const bool someSurface =
+      faces && std::any_of(faces->ids.begin(), faces->ids.end(),
+                           [](uint32_t id) { return id != FaceIdImage::kNoSurface; });
   double minRgb = count ? INFINITY : 0, maxRgb = 0;
-  for (float value : hdr.rgb) {
-    minRgb = std::min(minRgb, channel(value));
-    maxRgb = std::max(maxRgb, channel(value));
+  for (size_t i = 0; i < hdr.rgb.size(); ++i) {
+    const double value = channel(hdr.rgb[i]);
+    minRgb = std::min(minRgb, value);
+    if (!someSurface || faces->ids[i / 3] != FaceIdImage::kNoSurface)
+      maxRgb = std::max(maxRgb, value);
   }
   spaces.minRgb = minRgb;
   spaces.maxRgb = maxRgb;
@@ -43,7 +48,8 @@ DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound) {
     const float* rgb = &hdr.rgb[i * 3];
     const double v0 = std::max({channel(rgb[0]), channel(rgb[1]), channel(rgb[2])});
     // An image of one value has no range to map: it is shown white, not divided by zero.
-    const double v1 = range > 0 ? (v0 - minRgb) / range : (maxRgb > 0 ? 1.0 : 0.0);
+    const double v1 =
+        range > 0 ? std::min(1.0, (v0 - minRgb) / range) : (v0 > maxRgb || maxRgb > 0 ? 1.0 : 0.0);
     spaces.value0[i] = static_cast<float>(v0);
     spaces.value1[i] = static_cast<float>(v1);
     spaces.value3[i] = static_cast<float>(lowerBound + (1 - lowerBound) * v1);

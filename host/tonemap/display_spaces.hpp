@@ -26,7 +26,12 @@ struct DisplaySpaces {
 float boundedDisplayValue(double value, double lowerBound);
 
 // Non-finite or negative channels count as 0: a render never has them, a hand-made EXR might.
-DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound);
+// With `faces`, MaxRGB is taken over the pixels that show a surface or a source (when some do):
+// what a ray that leaves the scene shows (the sky through a window, the sun's disk at ~6e8 cd/m²)
+// does not set the range of the room's own luminances; a background pixel above it shows V1 = 1,
+// white. Without daylight the background is black and MaxRGB is the same either way.
+DisplaySpaces displaySpaces(const RgbImage& hdr, double lowerBound,
+                            const FaceIdImage* faces = nullptr);
 
 // HSV → RGB with the pixel's Space-2 hue and saturation and the display V given per pixel, then
 // Space 4. HSV → RGB is homogeneous in V, so this is the Space-1 colour scaled by V_display / V1.

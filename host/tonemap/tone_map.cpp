@@ -150,8 +150,8 @@ ScalarImage displayValues(const RgbImage& hdr, const FaceIdImage& faces,
   ToneMapStats local;
   ToneMapStats& s = stats ? *stats : local;
   s = ToneMapStats{};
-  ScalarImage display =
-      displayValuesIn(displaySpaces(hdr, options.targetDisplay().lowerBound()), faces, options, s);
+  ScalarImage display = displayValuesIn(
+      displaySpaces(hdr, options.targetDisplay().lowerBound(), &faces), faces, options, s);
   s.totalSeconds = secondsSince(start);
   return display;
 }
@@ -164,7 +164,7 @@ DisplayImage toneMap(const RgbImage& hdr, const FaceIdImage& faces, const ToneMa
   ToneMapStats& s = stats ? *stats : local;
   s = ToneMapStats{};
   const DisplayModel display = options.targetDisplay();
-  const DisplaySpaces spaces = displaySpaces(hdr, display.lowerBound());
+  const DisplaySpaces spaces = displaySpaces(hdr, display.lowerBound(), &faces);
   DisplayImage image =
       encodedImage(hdr, spaces, displayValuesIn(spaces, faces, options, s), display);
   s.totalSeconds = secondsSince(start);
