@@ -333,7 +333,7 @@ struct IndirectField::State {
     std::vector<Vec2> local(points.size());
     std::vector<SamplePoint> exact;
     std::vector<std::size_t> exactAt;
-    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2;
+    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2, lastRoot = -1;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const FacePoint& p = points[i];
       int faceId = -1;
@@ -348,14 +348,17 @@ struct IndirectField::State {
       int t = -1;
       if (faceId >= 0) {
         local[i] = faces[faceId].local(p.position);
-        // Neighbouring points mostly share a triangle: try the last one's first.
-        if (i > 0 && leaf[i - 1] >= 0 && triangles[leaf[i - 1]].face == faceId &&
-            triangles[leaf[i - 1]].barycentric(local[i]).minCoeff() >= 0.0) {
-          t = leaf[i - 1];
+        // Neighbouring points mostly share a fan triangle: the last one's, where it holds this
+        // one strictly inside (on an edge the search decides, so that a point's triangle does
+        // not depend on the order of the points).
+        if (lastRoot >= 0 && triangles[lastRoot].face == faceId &&
+            triangles[lastRoot].barycentric(local[i]).minCoeff() > 0.0) {
+          t = lastRoot;
           outside = 0.0;
         } else {
           t = root(faceId, local[i], outside);
         }
+        lastRoot = t;
       }
       if (t < 0 || outside > reach) {
         exactAt.push_back(i);

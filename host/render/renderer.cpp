@@ -146,8 +146,10 @@ struct Renderer::State {
       for (std::size_t j = start; j < end; ++j) {
         const SamplePoint p = surfacePoint(camera, layer.visibility, samples[j]);
         const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[samples[j]]);
-        points.push_back(p);
-        onFaces.push_back(FacePoint{p.position, face.index, face.face});
+        if (exact)
+          points.push_back(p);
+        else
+          onFaces.push_back(FacePoint{p.position, face.index, face.face});
       }
       if (exact) {
         const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
