@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -97,6 +98,26 @@ struct IndirectField::State {
   std::vector<FieldNode> nodes;
   std::unordered_map<NodeKey, int, NodeKeyHash> nodeAt;
   IndirectFieldStats stats;
+  // A point's solid and the bits of its coordinates.
+  struct PointKey {
+    int solid;
+    std::array<uint64_t, 3> bits;
+    bool operator==(const PointKey&) const = default;
+  };
+  struct PointKeyHash {
+    std::size_t operator()(const PointKey& k) const {
+      uint64_t h = static_cast<uint64_t>(k.solid) * 0x9E3779B97F4A7C15ull;
+      for (uint64_t b : k.bits) h ^= b + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+      return static_cast<std::size_t>(h);
+    }
+  };
+  static PointKey pointKey(const SamplePoint& p) {
+    return PointKey{
+        p.solid,
+        {std::bit_cast<uint64_t>(p.position.x()), std::bit_cast<uint64_t>(p.position.y()),
+         std::bit_cast<uint64_t>(p.position.z())}};
+  }
+  std::unordered_map<PointKey, Eigen::Vector3d, PointKeyHash> gatheredPoints;
 
   State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o)
       : mesh(&m),
@@ -397,11 +418,25 @@ struct IndirectField::State {
       for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
       for (int c = 0; c < 3; ++c) channels[i * 3 + c] = static_cast<float>(e[c]);
     }
-    if (!exact.empty()) {
-      const std::vector<Eigen::Vector3d> e = gather(exact);
-      for (std::size_t k = 0; k < exact.size(); ++k)
-        for (int c = 0; c < 3; ++c) channels[exactAt[k] * 3 + c] = static_cast<float>(e[k][c]);
-      stats.pointsGathered += exact.size();
+    // Points gathered one by one are kept by their exact position: the renders of one view
+    // (another interval, the AOV and the image) ask for the same points again.
+    std::vector<SamplePoint> missing;
+    std::vector<PointKey> missingKey;
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+      const PointKey key = pointKey(exact[k]);
+      if (!gatheredPoints.contains(key) && (missingKey.empty() || !(missingKey.back() == key))) {
+        missing.push_back(exact[k]);
+        missingKey.push_back(key);
+      }
+    }
+    if (!missing.empty()) {
+      const std::vector<Eigen::Vector3d> e = gather(missing);
+      for (std::size_t k = 0; k < missing.size(); ++k) gatheredPoints[missingKey[k]] = e[k];
+      stats.pointsGathered += missing.size();
+    }
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+      const Eigen::Vector3d& e = gatheredPoints.at(pointKey(exact[k]));
+      for (int c = 0; c < 3; ++c) channels[exactAt[k] * 3 + c] = static_cast<float>(e[c]);
     }
     stats.seconds += secondsSince(start);
   }
