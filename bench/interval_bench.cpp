@@ -4,8 +4,12 @@
 // |Y_k − Y_1| over the 99th percentile of Y_1 (all pixels), the largest relative error among the
 // pixels above 1 % of that percentile, the share of samples computed exactly, the render's wall
 // and CPU time (each the best of R; no files written; CPU time, of every thread, is steadier than
-// wall time on a shared machine), the direct light's time at k = 1 (illuminance_s) and the
-// interreflected light's at k (indirect_s).
+// wall time on a shared machine), the direct light's time at k = 1 (direct1_s) and the
+// interreflected light's at k (indirectk_s). With interreflection the renderer's field of
+// interreflected light (radiosity/indirect_field.hpp) is shared by every render of the scene:
+// first1_s is the view's first full-size render (k = 1, gathering what the field lacks for it),
+// field_nodes and field_s what the field has gathered and spent so far (the warm-up included);
+// the best-of-R renders find it complete.
 //   usage: interval_bench [--device cpu|gpu|<index>] [--size WxH] [--k K] [--repeat R]
 //                         [--direct-only] [--view NAME] [--scene FILE]
 #include <fmt/format.h>
@@ -90,10 +94,11 @@ int main(int argc, char** argv) {
              directOnly ? "direct only" : "total (direct + interreflected)", k, device.info().name,
              repeat);
   fmt::print(
-      "{:<12} {:>9} {:>11} {:>7} {:>8} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8} {:>9} {:>9} {:>9} "
-      "{:>9}\n",
-      "view", "p99_cdm2", "max_of_p99%", "pixel%", "exact_%", "render1_s", "renderk_s", "speed-up",
-      "cpu1_s", "cpuk_s", "cpu_x", "direct1_s", "indirectk_s", "gathered1", "gatheredk");
+      "{:<12} {:>9} {:>11} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8} {:>9} {:>11} "
+      "{:>11} {:>8} {:>9}\n",
+      "view", "p99_cdm2", "max_of_p99%", "pixel%", "exact_%", "first1_s", "render1_s", "renderk_s",
+      "speed-up", "cpu1_s", "cpuk_s", "cpu_x", "direct1_s", "indirectk_s", "field_nodes", "field_s",
+      "gatheredk");
   for (const View& full : scene.views) {
     if (!only.empty() && full.name != only) continue;
     View view = full;
@@ -101,6 +106,7 @@ int main(int argc, char** argv) {
     view.height = height;
     renderer.render(View{view.name, view.eye, view.target, view.up, view.fovDegrees, 64, 36},
                     RenderOptions{1, 1, {}});  // warm-up: kernels built and cached
+    const Timed first = bestOf(renderer, view, 1, 1);
     const Timed exact = bestOf(renderer, view, 1, repeat);
     const Timed sampled = bestOf(renderer, view, k, repeat);
     const std::vector<double> y1 = luminanceY(exact.view.luminance),
@@ -115,14 +121,15 @@ int main(int argc, char** argv) {
       worst = std::max(worst, d);
       if (y1[i] > 0.01 * p99) worstRelative = std::max(worstRelative, d / y1[i]);
     }
+    const IndirectFieldStats* field = renderer.indirectField();
     fmt::print(
-        "{:<12} {:>9.2f} {:>11.4f} {:>7.4f} {:>8.1f} {:>9.3f} {:>9.3f} {:>8.2f} {:>8.3f} {:>8.3f} "
-        "{:>8.2f} {:>9.3f} {:>9.3f} {:>9} {:>9}\n",
+        "{:<12} {:>9.2f} {:>11.4f} {:>7.4f} {:>8.1f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.2f} {:>8.3f} "
+        "{:>8.3f} {:>8.2f} {:>9.3f} {:>11.3f} {:>11} {:>8.3f} {:>9}\n",
         view.name, p99, 100 * worst / p99, 100 * worstRelative,
-        100 * sampled.view.stats.exactShare(), exact.seconds, sampled.seconds,
+        100 * sampled.view.stats.exactShare(), first.seconds, exact.seconds, sampled.seconds,
         exact.seconds / sampled.seconds, exact.cpuSeconds, sampled.cpuSeconds,
         exact.cpuSeconds / sampled.cpuSeconds, exact.view.stats.illuminanceSeconds,
-        sampled.view.stats.indirectSeconds, exact.view.stats.gatheredSamples,
+        sampled.view.stats.indirectSeconds, field ? field->nodes : 0, field ? field->seconds : 0.0,
         sampled.view.stats.gatheredSamples);
   }
   return 0;

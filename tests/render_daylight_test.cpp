@@ -115,7 +115,7 @@ TEST(RenderedDaylight, WithInterreflectionAPixelEqualsTheGridsTotal) {
   Estimator estimator(options, scene);
   const View view = smallViews(scene).front();
   RenderOptions everywhere;
-  everywhere.indirectSpacing = 1;
+  everywhere.exactIndirect = true;
   const PixelComparison c = compare(renderer, estimator, view, everywhere, shadeFloor(scene));
   EXPECT_EQ(c.gathered, c.pixels);
   EXPECT_GT(c.sunlit, c.pixels / 50);

@@ -103,7 +103,7 @@ int run(const RenderCommandOptions& options) {
           "visibility {:.2f} s, illuminance {:.2f} s, shading {:.2f} s{}\n",
           r.view.name, r.view.width, r.view.height, options.spp, 100.0 * s.exactShare(),
           s.visibilitySeconds, s.illuminanceSeconds, s.shadingSeconds,
-          report.interreflection ? fmt::format(", interreflection {:.2f} s ({} samples gathered)",
+          report.interreflection ? fmt::format(", interreflection {:.2f} s ({} points gathered)",
                                                s.indirectSeconds, s.gatheredSamples)
                                  : std::string());
     }

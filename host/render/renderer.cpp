@@ -11,8 +11,8 @@
 #include "illuminance/host_daylight.hpp"
 #include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
+#include "radiosity/indirect_field.hpp"
 #include "render/camera.hpp"
-#include "render/indirect_sampling.hpp"
 #include "render/interval_sampling.hpp"
 #include "render/sky_background.hpp"
 #include "render/visibility_engine.hpp"
@@ -63,6 +63,8 @@ struct Renderer::State {
   VisibilityEngine visibility;
   std::optional<MeshOptions> mesh;                   // set: with interreflection
   std::unique_ptr<Interreflection> interreflection;  // solved for `scene` when `mesh` is set
+  // The interreflected light over the solved mesh, shared by every view and interval setting.
+  std::unique_ptr<IndirectField> field;
   TransferCache transfers;          // kept across setScene: a sweep's cases share transfers
   std::vector<Vec3> sourceColours;  // luminanceColour per source
   std::vector<Vec3> solidReflectance;
@@ -81,6 +83,7 @@ struct Renderer::State {
   }
 
   void prepare() {
+    field.reset();
     interreflection.reset();
     if (mesh) {
       interreflection = std::make_unique<Interreflection>(*device, *scene, illuminance, *mesh,
@@ -88,6 +91,10 @@ struct Renderer::State {
       // The mesh's direct light leaves the engine on a scene with the sky's sources cut at
       // some height (engine/daylight_evaluation.hpp); the samples take the sky on the host.
       if (scene->sky) illuminance.setScene(*scene);
+      field = std::make_unique<IndirectField>(interreflection->mesh(), scene->size(),
+                                              [this](std::span<const SamplePoint> points) {
+                                                return interreflection->indirectChannels(points);
+                                              });
     }
     background = SkyBackground(*scene);
     transmittances = {1.0};
@@ -186,40 +193,49 @@ struct Renderer::State {
     }
   }
 
-  // Gathers the interreflected light per channel at `samples` into `indirect` (3 per sample).
-  void gatherIndirect(const Camera& camera, const SampleLayer& layer,
-                      const std::vector<std::size_t>& samples, std::vector<float>& indirect,
-                      const std::function<void(std::size_t)>& done) {
+  // The interreflected light per channel at `samples` (3 floats per sample into `indirect`):
+  // from the field, or gathered exactly at every sample.
+  void indirectAt(const Camera& camera, const SampleLayer& layer,
+                  const std::vector<std::size_t>& samples, bool exact, std::vector<float>& indirect,
+                  const std::function<void(std::size_t)>& done) {
     std::vector<SamplePoint> points;
+    std::vector<FacePoint> onFaces;
+    std::vector<float> channels;
     for (std::size_t start = 0; start < samples.size(); start += kBatch) {
       const std::size_t end = std::min(samples.size(), start + kBatch);
       points.clear();
-      for (std::size_t j = start; j < end; ++j)
-        points.push_back(surfacePoint(camera, layer.visibility, samples[j]));
-      const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
-      for (std::size_t j = start; j < end; ++j)
-        for (int c = 0; c < 3; ++c)
-          indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
+      onFaces.clear();
+      for (std::size_t j = start; j < end; ++j) {
+        const SamplePoint p = surfacePoint(camera, layer.visibility, samples[j]);
+        const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[samples[j]]);
+        if (exact)
+          points.push_back(p);
+        else
+          onFaces.push_back(FacePoint{p.position, face.index, face.face});
+      }
+      if (exact) {
+        const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
+        for (std::size_t j = start; j < end; ++j)
+          for (int c = 0; c < 3; ++c)
+            indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
+      } else {
+        channels.assign(onFaces.size() * 3, 0.0f);
+        field->evaluate(onFaces, channels);
+        for (std::size_t j = start; j < end; ++j)
+          for (int c = 0; c < 3; ++c) indirect[samples[j] * 3 + c] = channels[(j - start) * 3 + c];
+      }
       done(end - start);
     }
   }
 
-  // Adds the interreflected light to the layer's surface samples (its direct light complete):
-  // gathered exactly where the lattice plan asks, interpolated within a face between.
-  void addIndirect(const Camera& camera, SampleLayer& layer, LatticePlan& plan,
+  // Adds the interreflected light to the layer's surface samples (its direct light complete).
+  void addIndirect(const Camera& camera, SampleLayer& layer,
+                   const std::vector<std::size_t>& surface, bool exact,
                    const std::function<void(std::size_t)>& done) {
-    const std::size_t n = layer.visibility.faceIds.size();
-    std::vector<float> indirect(n * 3, 0.0f);  // lx per channel
-    gatherIndirect(camera, layer, plan.exact(), indirect, done);
-    for (std::vector<std::size_t> round = plan.next(indirect, layer.illuminance); !round.empty();
-         round = plan.next(indirect, layer.illuminance))
-      gatherIndirect(camera, layer, round, indirect, done);
-    plan.interpolate(indirect, 3);
-    for (std::size_t i = 0; i < n; ++i) {
-      const uint32_t id = layer.visibility.faceIds[i];
-      if (id == FaceIdImage::kNoSurface) continue;
-      const VisibleFace& face = visibility.visible().face(id);
-      if (face.isSource) continue;
+    std::vector<float> indirect(layer.visibility.faceIds.size() * 3, 0.0f);  // lx per channel
+    indirectAt(camera, layer, surface, exact, indirect, done);
+    for (std::size_t i : surface) {
+      const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
       const Vec3 e(indirect[i * 3], indirect[i * 3 + 1], indirect[i * 3 + 2]);
       const Vec3 l = solidReflectance[face.index].cwiseProduct(e) / std::numbers::pi;
       layer.illuminance[i] += static_cast<float>(photometric(e));
@@ -227,7 +243,7 @@ struct Renderer::State {
     }
   }
 
-  SampleLayer renderSamples(const Camera& camera, int interval, int indirectSpacing,
+  SampleLayer renderSamples(const Camera& camera, int interval, bool exactIndirect,
                             RenderStats& stats,
                             const std::function<void(std::size_t, std::size_t)>& progress) {
     SampleLayer layer;
@@ -241,7 +257,7 @@ struct Renderer::State {
 
     start = Clock::now();
     std::vector<uint8_t> needed(n, 0);
-    std::size_t surface = 0;
+    std::vector<std::size_t> surface;
     for (std::size_t i = 0; i < n; ++i) {
       const uint32_t id = layer.visibility.faceIds[i];
       if (id == FaceIdImage::kNoSurface) {
@@ -260,26 +276,19 @@ struct Renderer::State {
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
       } else {
         needed[i] = 1;
-        ++surface;
+        surface.push_back(i);
       }
     }
     stats.samples += n;
-    stats.surfaceSamples += surface;
+    stats.surfaceSamples += surface.size();
     IntervalPlan plan(camera.width, camera.height, layer.visibility.faceIds, needed, interval);
-    std::optional<LatticePlan> lattice;
-    if (interreflection)
-      lattice.emplace(camera.width, camera.height, layer.visibility.faceIds, needed,
-                      indirectSpacing);
-    // The indirect rounds after the first are unknown until it is done: progress counts what
-    // is known.
-    std::size_t work = surface + (lattice ? lattice->exact().size() : 0);
+    const std::size_t work = surface.size() * (interreflection ? 2 : 1);
     stats.shadingSeconds += secondsSince(start);
 
     start = Clock::now();
     const int columns = classColumns();
     std::vector<ShadowClass> classes(n * columns, ShadowClass::Unlit);
     std::size_t done = 0;
-    // Later rounds are unknown until the earlier ones are done: progress counts what is known.
     const auto advance = [&](std::size_t count) {
       done += count;
       if (progress) progress(std::min(done, work), work);
@@ -297,14 +306,14 @@ struct Renderer::State {
     plan.interpolate(layer.illuminance, 1);
     plan.interpolate(layer.rgb, 3);
     stats.illuminanceSeconds += secondsSince(start);
-    if (lattice) {
+    if (interreflection) {
       start = Clock::now();
-      const auto counted = [&](std::size_t count) {
-        if (done >= work) work += count;
-        advance(count);
-      };
-      addIndirect(camera, layer, *lattice, counted);
-      stats.gatheredSamples += lattice->gathered();
+      const IndirectFieldStats before = field->stats();
+      addIndirect(camera, layer, surface, exactIndirect, advance);
+      stats.gatheredSamples += exactIndirect
+                                   ? surface.size()
+                                   : field->stats().nodes - before.nodes +
+                                         field->stats().pointsGathered - before.pointsGathered;
       stats.indirectSeconds += secondsSince(start);
     }
     if (progress) progress(work, work);
@@ -316,6 +325,10 @@ Renderer::Renderer(compute::Device& device, const Scene& scene, EngineOptions en
                    std::optional<MeshOptions> interreflection)
     : state_(std::make_unique<State>(device, scene, engine, interreflection)) {}
 Renderer::~Renderer() = default;
+
+const IndirectFieldStats* Renderer::indirectField() const {
+  return state_->field ? &state_->field->stats() : nullptr;
+}
 
 const InterreflectionReport* Renderer::interreflection() const {
   return state_->interreflection ? &state_->interreflection->report() : nullptr;
@@ -365,7 +378,7 @@ RenderedView Renderer::render(const View& view, const RenderOptions& options) {
   };
   const Camera centreCamera = Camera::forView(view, 1);
   const SampleLayer centre = state_->renderSamples(
-      centreCamera, options.interval, options.indirectSpacing, out.stats, report(0.0, centreShare));
+      centreCamera, options.interval, options.exactIndirect, out.stats, report(0.0, centreShare));
   const auto start = Clock::now();
   out.illuminance = ScalarImage(view.width, view.height);
   out.illuminance.values = centre.illuminance;
@@ -377,9 +390,9 @@ RenderedView Renderer::render(const View& view, const RenderOptions& options) {
     out.luminance.rgb = centre.rgb;
     return out;
   }
-  const SampleLayer fine = state_->renderSamples(Camera::forView(view, side), options.interval,
-                                                 options.indirectSpacing * side, out.stats,
-                                                 report(centreShare, 1.0 - centreShare));
+  const SampleLayer fine =
+      state_->renderSamples(Camera::forView(view, side), options.interval, options.exactIndirect,
+                            out.stats, report(centreShare, 1.0 - centreShare));
   const auto filterStart = Clock::now();
   const int fineWidth = view.width * side;
   for (int y = 0; y < view.height; ++y)

@@ -2,8 +2,8 @@
 // A view of the scene as a luminance image (cd/m² per RGB channel) with its illuminance and
 // face-id AOVs: primary visibility (visibility_engine), exact illuminance at the visible points
 // through the same IlluminanceEngine as the grids (no second implementation of the integral),
-// interval sampling along rows, the interreflected light gathered on a lattice of samples
-// (indirect_sampling.hpp) when it is asked for, L = ρ·(E_direct + E_indirect)/π per channel,
+// interval sampling along rows, the interreflected light from the field over the solved mesh
+// (radiosity/indirect_field.hpp) when it is asked for, L = ρ·(E_direct + E_indirect)/π per channel,
 // optional supersampling.
 #include <functional>
 #include <memory>
@@ -13,6 +13,7 @@
 #include "cl/device.hpp"
 #include "engine/illuminance_engine.hpp"
 #include "image/images.hpp"
+#include "radiosity/indirect_field.hpp"
 #include "radiosity/interreflection.hpp"
 #include "scene/scene.hpp"
 
@@ -23,10 +24,9 @@ struct RenderOptions {
   int spp = 1;       // samples per pixel, a square (1, 4, 9, 16, ...)
   // Called after each batch with the fraction done, in [0, 1].
   std::function<void(double)> progress;
-  // With interreflection: the interreflected light is gathered exactly every `indirectSpacing`
-  // samples in x and y and at every sample next to a face edge, interpolated within a face
-  // between (1: gathered at every sample). Supersampled layers scale it by their side.
-  int indirectSpacing = 8;
+  // With interreflection: the interreflected light is gathered exactly at every sample (the
+  // reference) instead of taken from the field over the solved mesh (radiosity/indirect_field).
+  bool exactIndirect = false;
 };
 
 struct RenderStats {
@@ -34,7 +34,9 @@ struct RenderStats {
   std::size_t surfaceSamples = 0;  // samples that show a solid (and need illuminance)
   std::size_t exactSamples = 0;    // of those, computed exactly
   double objectTestsPerSample = 0.0;
-  std::size_t gatheredSamples = 0;  // of the surface samples, interreflection gathered exactly
+  // Points where the interreflected light was gathered exactly in this render: every surface
+  // sample with exactIndirect, else the field's new nodes and the samples on no element.
+  std::size_t gatheredSamples = 0;
   double visibilitySeconds = 0.0, illuminanceSeconds = 0.0, shadingSeconds = 0.0;
   double indirectSeconds = 0.0;  // the interreflected light's gather and interpolation
   // Mpixel·sources/s over the illuminance part: surface samples × sources / time.
@@ -67,6 +69,9 @@ class Renderer {
   void setScene(const Scene& scene);
   // The interreflection's solver report; null when the renderer shows direct light only.
   const InterreflectionReport* interreflection() const;
+  // What the field of interreflected light has gathered so far (every view and render since
+  // the last setScene); null when the renderer shows direct light only.
+  const IndirectFieldStats* indirectField() const;
 
   // Throws std::invalid_argument for an interval below 1 or an spp that is not a square.
   RenderedView render(const View& view, const RenderOptions& options);

@@ -1,0 +1,461 @@
+#include "radiosity/indirect_field.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <numbers>
+#include <unordered_map>
+
+#include "geometry/tolerance.hpp"
+#include "radiosity/radiosity_solver.hpp"
+#include "timing/seconds_since.hpp"
+
+namespace penumbra {
+
+struct IndirectField::State {
+  using Vec2 = Eigen::Vector2d;
+
+  // One meshed face: its frame (2-D coordinates x·u, y·v about `origin`) and a uniform grid of
+  // cells over its triangles' bounding box, each cell listing the fan triangles that touch it.
+  struct FieldFace {
+    int solid = -1, face = -1;
+    Vec3 origin = Vec3::Zero(), u = Vec3::UnitX(), v = Vec3::UnitY(), normal = Vec3::UnitZ();
+    Vec2 low = Vec2::Zero();
+    double cell = 1.0;
+    int columns = 1, rows = 1;
+    std::vector<std::vector<int>> cells;
+    std::vector<int> roots;  // its fan triangles, while the grid is built
+
+    Vec2 local(const Vec3& p) const { return Vec2((p - origin).dot(u), (p - origin).dot(v)); }
+  };
+
+  struct FieldNode {
+    SamplePoint at;                                      // where it is gathered
+    Eigen::Vector3d indirect = Eigen::Vector3d::Zero();  // lx per channel
+    bool gathered = false;
+  };
+
+  enum class TriangleState : uint8_t { Open, Kept, Cut, Exact };
+
+  struct FieldTriangle {
+    std::array<int, 6> node{};   // corners a, b, c, then the midpoints of ab, bc, ca
+    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
+    Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
+    int face = -1;
+    int depth = 0;
+    int children = -1;  // the first of four consecutive triangles once cut
+    TriangleState state = TriangleState::Open;
+
+    // (λ_a, λ_b, λ_c) of a point in the face's frame.
+    Eigen::Vector3d barycentric(const Vec2& x) const {
+      const Vec2 l = toBarycentric * (x - corner[0]);
+      return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
+    }
+  };
+
+  struct NodeKey {
+    int face;
+    int64_t x, y;
+    bool operator==(const NodeKey&) const = default;
+  };
+
+  struct NodeKeyHash {
+    std::size_t operator()(const NodeKey& k) const {
+      uint64_t h = static_cast<uint64_t>(k.face) * 0x9E3779B97F4A7C15ull;
+      h ^= static_cast<uint64_t>(k.x) + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+      h ^= static_cast<uint64_t>(k.y) + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+      return static_cast<std::size_t>(h);
+    }
+  };
+
+  static double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+  // The quadratic Lagrange weights of the six nodes at barycentric λ.
+  static std::array<double, 6> quadraticWeights(const Eigen::Vector3d& l) {
+    return {l[0] * (2 * l[0] - 1), l[1] * (2 * l[1] - 1), l[2] * (2 * l[2] - 1),
+            4 * l[0] * l[1],       4 * l[1] * l[2],       4 * l[2] * l[0]};
+  }
+
+  // The child of a triangle cut at its midpoints that holds barycentric λ: the corner quarters
+  // 0, 1, 2 where that corner's λ is at least ½, the middle one (3) otherwise.
+  static int quarterAt(const Eigen::Vector3d& l) {
+    for (int k = 0; k < 3; ++k)
+      if (l[k] >= 0.5) return k;
+    return 3;
+  }
+
+  const SurfaceMesh* mesh;
+  FieldGather gather;
+  FieldOptions options;
+  double quantum;  // m: node positions closer than this are one node
+  double nudge;    // m: how far inside a boundary node is gathered
+  std::vector<FieldFace> faces;
+  std::map<std::pair<int, int>, int> faceIndex;  // (solid, face) → faces
+  std::vector<FieldTriangle> triangles;
+  std::vector<FieldNode> nodes;
+  std::unordered_map<NodeKey, int, NodeKeyHash> nodeAt;
+  IndirectFieldStats stats;
+  // A point's solid and the bits of its coordinates.
+  struct PointKey {
+    int solid;
+    std::array<uint64_t, 3> bits;
+    bool operator==(const PointKey&) const = default;
+  };
+  struct PointKeyHash {
+    std::size_t operator()(const PointKey& k) const {
+      uint64_t h = static_cast<uint64_t>(k.solid) * 0x9E3779B97F4A7C15ull;
+      for (uint64_t b : k.bits) h ^= b + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+      return static_cast<std::size_t>(h);
+    }
+  };
+  static PointKey pointKey(const SamplePoint& p) {
+    return PointKey{
+        p.solid,
+        {std::bit_cast<uint64_t>(p.position.x()), std::bit_cast<uint64_t>(p.position.y()),
+         std::bit_cast<uint64_t>(p.position.z())}};
+  }
+  std::unordered_map<PointKey, Eigen::Vector3d, PointKeyHash> gatheredPoints;
+
+  State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o)
+      : mesh(&m),
+        gather(std::move(g)),
+        options(o),
+        quantum(Tolerance::kRelativeInput * std::max(sceneSize, 1.0)),
+        nudge(kNudgeInKernelTolerances * Tolerance::kernelLength(sceneSize)) {
+    for (const SurfaceElement& element : mesh->elements) addElement(element);
+    for (FieldFace& face : faces) buildGrid(face);
+  }
+
+  FieldFace& faceOf(const SurfaceElement& element) {
+    const auto [it, added] =
+        faceIndex.emplace(std::pair{element.solid, element.face}, static_cast<int>(faces.size()));
+    if (added) {
+      FieldFace f;
+      f.solid = element.solid;
+      f.face = element.face;
+      const std::vector<Vec3>& v = element.polygon.vertices();
+      f.normal = element.polygon.normal();
+      f.origin = v[0];
+      f.u = (v[1] - v[0]).normalized();
+      f.v = f.normal.cross(f.u).normalized();
+      faces.push_back(f);
+    }
+    return faces[it->second];
+  }
+
+  // The element's fan triangles from its first vertex; triangles of no area are left out.
+  void addElement(const SurfaceElement& element) {
+    if (element.polygon.empty()) return;
+    FieldFace& face = faceOf(element);
+    const int faceId = static_cast<int>(&face - faces.data());
+    std::vector<Vec2> p;
+    for (const Vec3& x : element.polygon.vertices()) p.push_back(face.local(x));
+    for (std::size_t i = 1; i + 1 < p.size(); ++i) {
+      const double twiceArea = cross2(p[i] - p[0], p[i + 1] - p[0]);
+      const double longest =
+          std::max({(p[i] - p[0]).norm(), (p[i + 1] - p[i]).norm(), (p[0] - p[i + 1]).norm()});
+      if (twiceArea <= quantum * longest) continue;
+      face.roots.push_back(addTriangle(faceId, {p[0], p[i], p[i + 1]}, 0));
+    }
+  }
+
+  int node(int faceId, const Vec2& x) {
+    const NodeKey key{faceId, std::llround(x.x() / quantum), std::llround(x.y() / quantum)};
+    const auto [it, added] = nodeAt.emplace(key, static_cast<int>(nodes.size()));
+    if (added) {
+      const FieldFace& f = faces[faceId];
+      FieldNode n;
+      n.at.position = f.origin + x.x() * f.u + x.y() * f.v + inward(faceId, x);
+      n.at.normal = f.normal;
+      n.at.solid = f.solid;
+      nodes.push_back(n);
+    }
+    return it->second;
+  }
+
+  int addTriangle(int faceId, const std::array<Vec2, 3>& corner, int depth) {
+    FieldTriangle t;
+    t.corner = corner;
+    t.face = faceId;
+    t.depth = depth;
+    Eigen::Matrix2d edges;
+    edges.col(0) = corner[1] - corner[0];
+    edges.col(1) = corner[2] - corner[0];
+    t.toBarycentric = edges.inverse();
+    const std::array<Vec2, 6> at{corner[0],
+                                 corner[1],
+                                 corner[2],
+                                 0.5 * (corner[0] + corner[1]),
+                                 0.5 * (corner[1] + corner[2]),
+                                 0.5 * (corner[2] + corner[0])};
+    // Nodes are made once the triangles exist: node() probes the face's triangles.
+    for (int k = 0; k < 6; ++k) t.node[k] = -1;
+    triangles.push_back(t);
+    pendingNodes.push_back({static_cast<int>(triangles.size()) - 1, at});
+    return static_cast<int>(triangles.size()) - 1;
+  }
+
+  // Nodes of triangles made before their face's grid existed, placed after it.
+  struct PendingNodes {
+    int triangle;
+    std::array<Vec2, 6> at;
+  };
+  std::vector<PendingNodes> pendingNodes;
+
+  void placePendingNodes() {
+    for (const PendingNodes& p : pendingNodes)
+      for (int k = 0; k < 6; ++k)
+        triangles[p.triangle].node[k] = node(triangles[p.triangle].face, p.at[k]);
+    pendingNodes.clear();
+  }
+
+  void buildGrid(FieldFace& face) {
+    Vec2 low(INFINITY, INFINITY), high(-INFINITY, -INFINITY);
+    double longest = 0.0;
+    for (int t : face.roots)
+      for (const Vec2& c : triangles[t].corner) {
+        low = low.cwiseMin(c);
+        high = high.cwiseMax(c);
+      }
+    for (int t : face.roots) {
+      const auto& c = triangles[t].corner;
+      longest =
+          std::max({longest, (c[1] - c[0]).norm(), (c[2] - c[1]).norm(), (c[0] - c[2]).norm()});
+    }
+    face.low = low;
+    face.cell = std::max(0.5 * longest, quantum);
+    face.columns = std::max(1, static_cast<int>(std::ceil((high.x() - low.x()) / face.cell)));
+    face.rows = std::max(1, static_cast<int>(std::ceil((high.y() - low.y()) / face.cell)));
+    face.cells.assign(static_cast<std::size_t>(face.columns) * face.rows, {});
+    for (int t : face.roots) {
+      Vec2 a(INFINITY, INFINITY), b(-INFINITY, -INFINITY);
+      for (const Vec2& c : triangles[t].corner) {
+        a = a.cwiseMin(c);
+        b = b.cwiseMax(c);
+      }
+      const auto [c0, r0] = cellOf(face, a);
+      const auto [c1, r1] = cellOf(face, b);
+      for (int r = r0; r <= r1; ++r)
+        for (int c = c0; c <= c1; ++c)
+          face.cells[static_cast<std::size_t>(r) * face.columns + c].push_back(t);
+    }
+    face.roots.clear();
+  }
+
+  std::pair<int, int> cellOf(const FieldFace& face, const Vec2& x) const {
+    const int c = static_cast<int>(std::floor((x.x() - face.low.x()) / face.cell));
+    const int r = static_cast<int>(std::floor((x.y() - face.low.y()) / face.cell));
+    return {std::clamp(c, 0, face.columns - 1), std::clamp(r, 0, face.rows - 1)};
+  }
+
+  // The fan triangle of `faceId` that holds x, or the one x lies least outside of; with how far
+  // outside (barycentric, 0 inside). -1 when the face has none near.
+  int root(int faceId, const Vec2& x, double& outside) const {
+    const FieldFace& face = faces[faceId];
+    const auto [c, r] = cellOf(face, x);
+    int best = -1;
+    outside = INFINITY;
+    for (int t : face.cells[static_cast<std::size_t>(r) * face.columns + c]) {
+      const double miss = std::max(0.0, -triangles[t].barycentric(x).minCoeff());
+      if (miss < outside) {
+        outside = miss;
+        best = t;
+        if (miss == 0.0) break;
+      }
+    }
+    return best;
+  }
+
+  // How far to move a node at x so that it is gathered inside its face's elements: probes in
+  // eight directions at the nudge distance; the move is away from those that leave every
+  // element (none inside).
+  Vec3 inward(int faceId, const Vec2& x) const {
+    Vec2 away = Vec2::Zero();
+    for (int k = 0; k < 8; ++k) {
+      const double angle = k * std::numbers::pi / 4;
+      const Vec2 d(std::cos(angle), std::sin(angle));
+      double outside = 0.0;
+      if (root(faceId, x + nudge * d, outside) < 0 || outside > 1e-9) away -= d;
+    }
+    if (away.norm() == 0.0) return Vec3::Zero();
+    away *= nudge / away.norm();
+    const FieldFace& f = faces[faceId];
+    return away.x() * f.u + away.y() * f.v;
+  }
+
+  // Gathers every node of the open triangles in `open` that is not gathered yet.
+  void gatherNodes(const std::vector<int>& open) {
+    std::vector<int> wanted;
+    for (int t : open)
+      for (int n : triangles[t].node)
+        if (!nodes[n].gathered) {
+          nodes[n].gathered = true;
+          wanted.push_back(n);
+        }
+    if (wanted.empty()) return;
+    std::vector<SamplePoint> points;
+    for (int n : wanted) points.push_back(nodes[n].at);
+    const std::vector<Eigen::Vector3d> indirect = gather(points);
+    for (std::size_t k = 0; k < wanted.size(); ++k) {
+      FieldNode& n = nodes[wanted[k]];
+      n.indirect = indirect[k];
+    }
+    stats.nodes += wanted.size();
+  }
+
+  // Keeps the triangle or cuts it in four (its nodes gathered).
+  void decide(int t) {
+    ++stats.triangles;
+    FieldTriangle& tri = triangles[t];
+    // Relative to the interreflected E at the midpoint, which no pixel's total E is below,
+    // whatever direct shadow crosses the triangle.
+    double worst = 0.0;
+    for (int side = 0; side < 3; ++side) {
+      const FieldNode& m = nodes[tri.node[3 + side]];
+      const Eigen::Vector3d line =
+          0.5 * (nodes[tri.node[side]].indirect + nodes[tri.node[(side + 1) % 3]].indirect);
+      const double miss = (m.indirect - line).cwiseAbs().maxCoeff();
+      if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m.indirect), 1e-300));
+    }
+    if (worst <= options.tolerance) {
+      tri.state = TriangleState::Kept;
+      return;
+    }
+    if (tri.depth >= options.maxDepth) {
+      tri.state = TriangleState::Exact;
+      return;
+    }
+    const std::array<Vec2, 3> c = tri.corner;
+    const Vec2 ab = 0.5 * (c[0] + c[1]), bc = 0.5 * (c[1] + c[2]), ca = 0.5 * (c[2] + c[0]);
+    const int face = tri.face, depth = tri.depth + 1;
+    const int first = addTriangle(face, {c[0], ab, ca}, depth);
+    addTriangle(face, {ab, c[1], bc}, depth);
+    addTriangle(face, {ca, bc, c[2]}, depth);
+    addTriangle(face, {ab, bc, ca}, depth);
+    placePendingNodes();
+    triangles[t].children = first;
+    triangles[t].state = TriangleState::Cut;
+  }
+
+  // The kept or open triangle below `t` that holds x.
+  int descend(int t, const Vec2& x) const {
+    while (triangles[t].state == TriangleState::Cut)
+      t = triangles[t].children + quarterAt(triangles[t].barycentric(x));
+    return t;
+  }
+
+  void evaluate(std::span<const FacePoint> points, std::span<float> channels) {
+    const auto start = Clock::now();
+    const double reach = 1e-6;  // barycentric: how far outside its triangle a point may lie
+    std::vector<int> leaf(points.size(), -1);
+    std::vector<Vec2> local(points.size());
+    std::vector<SamplePoint> exact;
+    std::vector<std::size_t> exactAt;
+    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2, lastRoot = -1;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const FacePoint& p = points[i];
+      int faceId = -1;
+      if (p.solid == lastSolid && p.face == lastFaceOfSolid) {
+        faceId = lastFace;
+      } else {
+        const auto it = faceIndex.find({p.solid, p.face});
+        faceId = it == faceIndex.end() ? -1 : it->second;
+        lastSolid = p.solid, lastFaceOfSolid = p.face, lastFace = faceId;
+      }
+      double outside = INFINITY;
+      int t = -1;
+      if (faceId >= 0) {
+        local[i] = faces[faceId].local(p.position);
+        // Neighbouring points mostly share a fan triangle: the last one's, where it holds this
+        // one strictly inside (on an edge the search decides, so that a point's triangle does
+        // not depend on the order of the points).
+        if (lastRoot >= 0 && triangles[lastRoot].face == faceId &&
+            triangles[lastRoot].barycentric(local[i]).minCoeff() > 0.0) {
+          t = lastRoot;
+          outside = 0.0;
+        } else {
+          t = root(faceId, local[i], outside);
+        }
+        lastRoot = t;
+      }
+      if (t < 0 || outside > reach) {
+        exactAt.push_back(i);
+        exact.push_back(
+            SamplePoint{p.position, faceId >= 0 ? faces[faceId].normal : Vec3::UnitZ(), p.solid});
+        continue;
+      }
+      leaf[i] = descend(t, local[i]);
+    }
+    // Rounds: gather the open triangles the points reach, decide them, descend again.
+    for (;;) {
+      std::vector<int> open;
+      std::vector<char> listed(triangles.size(), 0);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (leaf[i] < 0) continue;
+        leaf[i] = descend(leaf[i], local[i]);
+        if (triangles[leaf[i]].state == TriangleState::Open && !listed[leaf[i]]) {
+          listed[leaf[i]] = 1;
+          open.push_back(leaf[i]);
+        }
+      }
+      if (open.empty()) break;
+      gatherNodes(open);
+      for (int t : open) decide(t);
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      if (leaf[i] < 0) continue;
+      const FieldTriangle& tri = triangles[leaf[i]];
+      if (tri.state == TriangleState::Exact) {
+        exactAt.push_back(i);
+        exact.push_back(SamplePoint{points[i].position, faces[tri.face].normal, points[i].solid});
+        continue;
+      }
+      const std::array<double, 6> w = quadraticWeights(tri.barycentric(local[i]));
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
+      for (int c = 0; c < 3; ++c) channels[i * 3 + c] = static_cast<float>(e[c]);
+    }
+    // Points gathered one by one are kept by their exact position: the renders of one view
+    // (another interval, the AOV and the image) ask for the same points again.
+    std::vector<SamplePoint> missing;
+    std::vector<PointKey> missingKey;
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+      const PointKey key = pointKey(exact[k]);
+      if (!gatheredPoints.contains(key) && (missingKey.empty() || !(missingKey.back() == key))) {
+        missing.push_back(exact[k]);
+        missingKey.push_back(key);
+      }
+    }
+    if (!missing.empty()) {
+      const std::vector<Eigen::Vector3d> e = gather(missing);
+      for (std::size_t k = 0; k < missing.size(); ++k) gatheredPoints[missingKey[k]] = e[k];
+      stats.pointsGathered += missing.size();
+    }
+    for (std::size_t k = 0; k < exact.size(); ++k) {
+      const Eigen::Vector3d& e = gatheredPoints.at(pointKey(exact[k]));
+      for (int c = 0; c < 3; ++c) channels[exactAt[k] * 3 + c] = static_cast<float>(e[c]);
+    }
+    stats.seconds += secondsSince(start);
+  }
+};
+
+IndirectField::IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
+                             FieldOptions options)
+    : state_(std::make_unique<State>(mesh, sceneSize, std::move(gather), options)) {
+  state_->placePendingNodes();
+}
+
+IndirectField::~IndirectField() = default;
+
+void IndirectField::evaluate(std::span<const FacePoint> points, std::span<float> channels) {
+  state_->evaluate(points, channels);
+}
+
+const IndirectFieldStats& IndirectField::stats() const {
+  return state_->stats;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,89 @@
+#pragma once
+// The interreflected light over the meshed faces as an interpolant of exact final gathers, for
+// renders: every element is cut into triangles (a fan from its first vertex), each triangle
+// carries the exact gather per RGB channel at its corners and the midpoints of its sides and is
+// interpolated quadratically between them. A triangle is kept when the midpoints lie within the
+// tolerance of the straight line between its corners; otherwise it is cut in four at the
+// midpoints and each quarter is decided the same way, down to a depth, below which its points
+// are gathered one by one. Values are taken on one element only, so nothing is interpolated
+// across a face edge, and a triangle is decided from its own six values alone, so the value at
+// a point does not depend on which points were asked for before: the field is shared between
+// views and interval settings of a render.
+//
+// The interreflected light has no hard shadows (every element is a broad source), but at a
+// concave corner the neighbouring face is seen edge-on exactly on the corner line and fills half
+// the hemisphere just beside it: E jumps there. Nodes on the boundary of their face's elements
+// are therefore gathered a small distance inside (kNudgeInKernelTolerances), where E has its
+// limit from the inside; triangles there bend steeply and are cut down to the depth.
+// Triangles are decided only where points are asked for, and kept across calls.
+#include <functional>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "geometry/sample_point.hpp"
+#include "radiosity/surface_mesh.hpp"
+
+namespace penumbra {
+
+// A point on face `face` of solid `solid` (the solid's face numbering, as SurfaceElement).
+struct FacePoint {
+  Vec3 position = Vec3::Zero();  // m, on the face's plane
+  int solid = -1;
+  int face = -1;
+};
+
+// The exact interreflected E per RGB channel at points, lx (Interreflection::indirectChannels):
+// what the field gathers at its nodes.
+using FieldGather = std::function<std::vector<Eigen::Vector3d>(std::span<const SamplePoint>)>;
+
+struct FieldOptions {
+  // How far a side's midpoint may lie from the straight line between its corners, per channel,
+  // relative to the interreflected E at the midpoint, for a triangle to be kept. That bounds
+  // the linear interpolant's error; the field interpolates quadratically through the midpoints,
+  // closer still where E is smooth. Relative to the interreflected E, which is smooth and below
+  // any pixel's total E whatever direct shadow crosses the triangle, so that the error relative
+  // to the total stays below 1e-3 too: under the mesh's own accuracy on the total E (1.8e-3
+  // with the default elements, docs/method.md).
+  double tolerance = 1e-3;
+  // Cuts in four below an element's fan triangle: 5 levels take a 0.5 m element's triangles to
+  // 1.6 cm. A triangle still uneven there (a concave corner, where the neighbouring face fills
+  // half the view just beside the edge) has its points gathered exactly one by one.
+  int maxDepth = 5;
+};
+
+struct IndirectFieldStats {
+  std::size_t nodes = 0;      // points gathered exactly for the field
+  std::size_t triangles = 0;  // triangles decided (kept or cut)
+  // Points gathered exactly one by one: on no element, or in a triangle still uneven at the
+  // depth limit.
+  std::size_t pointsGathered = 0;
+  double seconds = 0.0;  // in evaluate(), gathers included
+};
+
+class IndirectField {
+ public:
+  // Nodes at a face's boundary are gathered this many kernel length tolerances inside
+  // (Tolerance::kernelLength at the scene's size): far enough that the kernel sees the
+  // neighbouring face in front of the point, and far below a pixel (80 µm in the office).
+  static constexpr double kNudgeInKernelTolerances = 10.0;
+
+  // `mesh` must outlive the field. `sceneSize` (m, Scene::size) sets the length tolerances.
+  IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
+                FieldOptions options = {});
+  ~IndirectField();
+  IndirectField(const IndirectField&) = delete;
+  IndirectField& operator=(const IndirectField&) = delete;
+
+  // The interreflected E (lx per channel) at each point, 3 values per point into `channels`:
+  // interpolated on the element the point lies on, gathering the triangles it needs first;
+  // gathered exactly where the point lies on no element (a face without a mesh).
+  void evaluate(std::span<const FacePoint> points, std::span<float> channels);
+  const IndirectFieldStats& stats() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace penumbra
