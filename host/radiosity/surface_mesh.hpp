@@ -27,8 +27,8 @@ struct MeshOptions {
   // (unevenElements in interreflection.cpp).
   double refinement = 1e-3;
   int refinementLevels = 3;
-  // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000, and as much again
-  // for the system the solver iterates on).
+  // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000; the solver works
+  // on products with it and holds no other N × N matrix).
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
   // any refinement is refused with the element size that would fit.
   std::size_t maxElements = 8000;
