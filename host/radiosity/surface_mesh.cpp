@@ -240,7 +240,7 @@ std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::str
     const Vec3 reflectance = scene.materials[scene.solids[face.solid].material].reflectance;
     for (ConvexPolygon& piece : faceOutsideSolids(face.polygon, others, tolerance)) {
       const double area = piece.area();
-      pieces.push_back({std::move(piece), face.solid, face.face, reflectance, area});
+      pieces.push_back({std::move(piece), face.solid, face.face, reflectance, area, -1});
     }
   }
   return pieces;
