@@ -95,6 +95,45 @@ TEST(Transfer, RowsOfAClosedRoomSumToPiAndReciprocityHolds) {
   EXPECT_LT(previousAsymmetry, 1e-3);
 }
 
+// Elements that share their block's shadow casters (elementSceneSharingCasters, what the dense
+// transfer uses) get the transfer of elements with their own: a block's volumes hold its
+// elements' and only list more candidates. The blocks themselves give nothing.
+TEST(Transfer, ElementsSharingTheirBlocksCastersGiveTheSameTransfer) {
+  TempDir dir("interreflection");
+  const Scene scene =
+      closedRoom(dir, "[4, 3, 3]",
+                 "solids:\n  - {name: desk, box: {min: [1.0, 1.0, 0.7], max: "
+                 "[2.6, 1.8, 0.75]}, material: paint}\n  - {name: cabinet, box: "
+                 "{min: [3.0, 0.2, 0.0], max: [3.8, 0.8, 1.8]}, material: paint}\n");
+  MeshOptions options;
+  options.quadratureOrder = 2;
+  const SurfaceMesh mesh = buildSurfaceMesh(scene, options);
+  const std::size_t blocks = mesh.casterBlocks.size();
+  ASSERT_LT(4 * blocks, mesh.elements.size());  // most blocks hold several elements
+  for (const SurfaceElement& element : mesh.elements) {
+    ASSERT_GE(element.casterBlock, 0);
+    // The block holds the element: its vertices lie in the block's plane, inside its edges.
+    const ConvexPolygon& block = mesh.casterBlocks[static_cast<std::size_t>(element.casterBlock)];
+    for (const Vec3& v : element.polygon.vertices()) {
+      EXPECT_NEAR(block.plane().signedDistance(v), 0.0, 1e-9);
+      const std::vector<Vec3>& b = block.vertices();
+      for (std::size_t k = 0; k < b.size(); ++k)
+        EXPECT_GE(block.normal().dot((b[(k + 1) % b.size()] - b[k]).cross(v - b[k])), -1e-9);
+    }
+  }
+  const Scene own = elementScene(scene, mesh);
+  const Scene shared = elementSceneSharingCasters(scene, mesh);
+  IlluminanceEngine ownEngine(cpuDevice(), own), sharedEngine(cpuDevice(), shared);
+  const Eigen::MatrixXd expected = elementTransfer(ownEngine, mesh);
+  const Eigen::MatrixXd t = elementTransfer(sharedEngine, mesh, blocks);
+  // E at unit luminance is at most π: the kernel's relative tolerance of that.
+  EXPECT_LT((t - expected).cwiseAbs().maxCoeff(), Tolerance::kKernelRelative * kPi);
+  std::size_t stride = 0;
+  const std::vector<float> e = sharedEngine.illuminanceBySource(mesh.nodes, stride);
+  for (std::size_t b = 0; b < blocks; ++b)
+    for (std::size_t p = 0; p < mesh.nodes.size(); ++p) ASSERT_EQ(e[b * stride + p], 0.0f);
+}
+
 // In a closed room of uniform ρ, the area average of the indirect E over all surfaces is
 // ρ/(1 - ρ) times that of the direct E (every reflected lumen lands on a surface again).
 TEST(Interreflection, ClosedRoomsConserveEnergy) {

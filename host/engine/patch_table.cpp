@@ -167,7 +167,9 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
   PatchTable table;
   table.entries.resize(workItems * faceCount);
   if (!culling) {
-    for (PnPatchFace& e : table.entries) e = PnPatchFace{0, -1, PN_CLASS_B, 0};
+    for (std::size_t k = 0; k < table.entries.size(); ++k)
+      table.entries[k] =
+          PnPatchFace{0, -1, shadows.faces[k % faceCount].emits ? PN_CLASS_B : PN_CLASS_C, 0};
     return table;
   }
   // Each group fills its own entries and a private candidate list; the lists are joined in
@@ -188,6 +190,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
     const std::size_t f = sf % faceCount;
+    if (!shadows.faces[f].emits) return;  // class C everywhere, below
     const FaceVolumes& faceVolumes = volumes[shadows.faces[f].casterFace(f)];
     std::vector<int> all(faceVolumes.solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
@@ -210,6 +213,12 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     std::vector<int> near, found;
     for (std::size_t f = 0; f < faceCount; ++f) {
       const EmittingFaceShadows& face = shadows.faces[f];
+      if (!face.emits) {  // nothing from it (Source::castersOnly)
+        for (std::size_t w = firstItem; w < firstItem + items; ++w)
+          table.entries[w * faceCount + f] =
+              PnPatchFace{static_cast<cl_int>(list.size()), 0, PN_CLASS_C, 0};
+        continue;
+      }
       const FaceVolumes& faceVolumes = volumes[face.casterFace(f)];
       // A caster that hides the face from a whole super-group or group (a wall between it and
       // another room's light) hides it from each of its work-items.

@@ -12,24 +12,47 @@
 
 namespace penumbra {
 
-Scene elementScene(const Scene& scene, const SurfaceMesh& mesh) {
+namespace {
+
+// The scene's solids with the blocks (if `blocks`) and then the elements as sources.
+Scene elementSources(const Scene& scene, const SurfaceMesh& mesh, bool blocks) {
   Scene elements;
   elements.file = scene.file;
   elements.materials = scene.materials;
   elements.solids = scene.solids;
   elements.room = scene.room;
-  elements.sources.reserve(mesh.elements.size());
+  const std::size_t first = blocks ? mesh.casterBlocks.size() : 0;
+  elements.sources.reserve(first + mesh.elements.size());
+  for (std::size_t b = 0; b < first; ++b) {
+    Source source;
+    source.name = "element-block-" + std::to_string(b);
+    source.faces = {mesh.casterBlocks[b]};
+    source.castersOnly = true;
+    elements.sources.push_back(std::move(source));
+  }
   for (std::size_t i = 0; i < mesh.elements.size(); ++i) {
     Source source;
     source.name = "element-" + std::to_string(i);
     source.faces = {mesh.elements[i].polygon};
     source.luminance = 1.0;
+    if (blocks) source.castersOf = mesh.elements[i].casterBlock;
     elements.sources.push_back(std::move(source));
   }
   return elements;
 }
 
-Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh) {
+}  // namespace
+
+Scene elementScene(const Scene& scene, const SurfaceMesh& mesh) {
+  return elementSources(scene, mesh, false);
+}
+
+Scene elementSceneSharingCasters(const Scene& scene, const SurfaceMesh& mesh) {
+  return elementSources(scene, mesh, true);
+}
+
+Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
+                                std::size_t firstElement) {
   const auto n = static_cast<Eigen::Index>(mesh.elements.size());
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(n, n);
   if (n == 0) return t;
@@ -46,7 +69,7 @@ Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& me
     const std::vector<float> e = engine.illuminanceBySource(
         std::span<const SamplePoint>(mesh.nodes).subspan(begin, end - begin), stride);
     for (Eigen::Index j = 0; j < n; ++j) {
-      const float* row = e.data() + static_cast<std::size_t>(j) * stride;
+      const float* row = e.data() + (firstElement + static_cast<std::size_t>(j)) * stride;
       for (std::size_t i = first; i < last; ++i) {
         double sum = 0.0;
         for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node)
@@ -109,7 +132,8 @@ std::vector<SamplePoint> farPoints(const SurfaceElement& element) {
 
 // t(i, j) = the mean of E from element j over element i's far points (farPoints), lx per
 // cd/m², every pair.
-void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, Eigen::MatrixXd& t) {
+void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, std::size_t firstElement,
+                      Eigen::MatrixXd& t) {
   const std::size_t n = mesh.elements.size();
   std::vector<SamplePoint> points;
   std::vector<std::size_t> start = {0};
@@ -127,7 +151,7 @@ void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, Eigen:
     const std::vector<float> e = engine.illuminanceBySource(
         std::span<const SamplePoint>(points).subspan(begin, end - begin), stride);
     for (std::size_t j = 0; j < n; ++j) {
-      const float* row = e.data() + j * stride;
+      const float* row = e.data() + (firstElement + j) * stride;
       for (std::size_t i = first; i < last; ++i) {
         double sum = 0.0;
         for (std::size_t k = start[i]; k < start[i + 1]; ++k) sum += row[k - begin];
@@ -144,7 +168,8 @@ void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, Eigen:
 // elementTransfer's for those pairs. values[i][k] for sender senders[i][k].
 std::vector<std::vector<double>> nodeAverages(IlluminanceEngine& engine, const SurfaceMesh& mesh,
                                               const std::vector<std::vector<int>>& senders,
-                                              const std::vector<std::size_t>& receivers) {
+                                              const std::vector<std::size_t>& receivers,
+                                              std::size_t firstElement) {
   std::vector<std::vector<double>> values(mesh.elements.size());
   std::vector<SamplePoint> points;
   std::vector<double> weights;
@@ -175,7 +200,7 @@ std::vector<std::vector<double>> nodeAverages(IlluminanceEngine& engine, const S
       weights.push_back(k < count ? mesh.weights[first + k] : 0.0);
     }
     for (std::size_t w = 0; w < items; ++w) {
-      faces.insert(faces.end(), senders[i].begin(), senders[i].end());
+      for (int j : senders[i]) faces.push_back(static_cast<cl_int>(firstElement) + j);
       start.push_back(static_cast<cl_int>(faces.size()));
       owner.push_back(static_cast<cl_int>(i));
     }
@@ -187,17 +212,17 @@ std::vector<std::vector<double>> nodeAverages(IlluminanceEngine& engine, const S
 }  // namespace
 
 Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
-                                const FarFieldRule& rule) {
-  if (!(rule.farRatio > 0.0)) return elementTransfer(engine, mesh);
+                                const FarFieldRule& rule, std::size_t firstElement) {
+  if (!(rule.farRatio > 0.0)) return elementTransfer(engine, mesh, firstElement);
   const std::size_t n = mesh.elements.size();
   Eigen::MatrixXd t =
       Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
   if (n == 0) return t;
-  farPointTransfer(engine, mesh, t);
+  farPointTransfer(engine, mesh, firstElement, t);
   std::vector<std::vector<int>> near = nearSenders(mesh, rule);
   std::vector<std::size_t> all(n);
   for (std::size_t i = 0; i < n; ++i) all[i] = i;
-  std::vector<std::vector<double>> averages = nodeAverages(engine, mesh, near, all);
+  std::vector<std::vector<double>> averages = nodeAverages(engine, mesh, near, all, firstElement);
 
   // Per receiver: the near senders' node averages in place of their far-point values, and the
   // far ones scaled so that the row keeps its sum over the far points.
@@ -228,7 +253,7 @@ Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& me
     for (std::size_t k = 0; k < near[i].size(); ++k) t(row, near[i][k]) = averages[i][k];
   }
   if (!again.empty()) {
-    averages = nodeAverages(engine, mesh, every, again);
+    averages = nodeAverages(engine, mesh, every, again, firstElement);
     for (std::size_t i : again)
       for (std::size_t j = 0; j < n; ++j)
         t(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = averages[i][j];

@@ -15,11 +15,20 @@ namespace penumbra {
 // grids and views of `scene` are left out.
 Scene elementScene(const Scene& scene, const SurfaceMesh& mesh);
 
+// elementScene with the mesh's caster blocks first, as sources that only hold shadow casters
+// (Source::castersOnly), each element sharing its block's (Source::castersOf): element j is
+// source mesh.casterBlocks.size() + j. The same transfer as elementScene's (a block's volumes
+// only cull less tightly), at a fraction of the casters' memory and set-up.
+Scene elementSceneSharingCasters(const Scene& scene, const SurfaceMesh& mesh);
+
 // t(i, j): the mean over element i's nodes (by their weights) of the illuminance in lx that
 // element j gives at 1 cd/m². `engine` must hold elementScene(scene, mesh) with unit
 // luminances. Within the quadrature's error, area(i)·t(i, j) = area(j)·t(j, i) (reciprocity),
 // and in a closed room every row sums to π (each node sees a whole hemisphere of elements).
-Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh);
+// `firstElement`: element j is the engine's source firstElement + j (elementSceneSharingCasters'
+// mesh.casterBlocks.size()).
+Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
+                                std::size_t firstElement = 0);
 
 // Which senders of a receiving element are far: those whose bounding ball lies a gap g from the
 // receiver's, of diameter d, with (d/g)² ≤ `farRatio`. Their light varies across the receiver
@@ -40,6 +49,6 @@ struct FarFieldRule {
 // their values. A receiver whose factor would leave [0.5, 2] (a far field too weak against the
 // near field's change across the receiver) has all its senders averaged over its nodes.
 Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh,
-                                const FarFieldRule& rule);
+                                const FarFieldRule& rule, std::size_t firstElement = 0);
 
 }  // namespace penumbra

@@ -136,9 +136,11 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
                                                   const EngineOptions& engine) {
   const auto start = Clock::now();
   auto geometry = std::make_shared<GeometryTransfer>();
-  geometry->elements = elementScene(scene, mesh);
+  geometry->elements = elementSceneSharingCasters(scene, mesh);
+  geometry->firstElement = mesh.casterBlocks.size();
   geometry->gather = std::make_unique<IlluminanceEngine>(device, geometry->elements, engine);
-  geometry->transfer = elementTransfer(*geometry->gather, mesh, FarFieldRule{});
+  geometry->transfer =
+      elementTransfer(*geometry->gather, mesh, FarFieldRule{}, geometry->firstElement);
   geometry->seconds = secondsSince(start);
   return geometry;
 }
@@ -356,7 +358,7 @@ Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> poi
     const std::vector<float> unit =
         geometry_->gather->illuminanceBySource(points.subspan(first, count), stride);
     for (std::size_t j = 0; j < elements; ++j) {
-      const float* row = unit.data() + j * stride;
+      const float* row = unit.data() + (geometry_->firstElement + j) * stride;
       for (Eigen::Index c = 0; c < luminance.cols(); ++c) {
         const double l = luminance(static_cast<Eigen::Index>(j), c);
         if (l == 0.0) continue;

@@ -2,9 +2,9 @@
 // The radiosity equations on the elements, per RGB channel c:
 //   E_ind = T · diag(ρ_c / π) · (E_dir + E_ind),
 // E the element-average illuminance, ρ the element's diffuse reflectance, L = ρ·E/π the
-// luminance each element then sends out. Solved per channel by BiCGSTAB on the dense system to a
-// relative residual of 1e-12 (radiosity_solver.cpp says why not a factorisation), the residual
-// measured after it.
+// luminance each element then sends out. Solved per channel by BiCGSTAB on products with T (the
+// system I - T·diag(ρ_c/π) is never formed) to a relative residual of 1e-12
+// (radiosity_solver.cpp says why not a factorisation), the residual measured after it.
 #include <Eigen/Dense>
 
 #include "radiosity/surface_mesh.hpp"

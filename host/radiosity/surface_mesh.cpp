@@ -38,35 +38,87 @@ bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double toleranc
   return anyInFront(a, b, tolerance) && anyInFront(b, a, tolerance);
 }
 
-std::vector<ConvexPolygon> cutIntoCells(const ConvexPolygon& piece, double size, double tolerance) {
-  const std::vector<Vec3>& v = piece.vertices();
-  Vec3 u = Vec3::Zero();
-  for (int i = 0; i < piece.size(); ++i) {
-    const Vec3 edge = v[(i + 1) % piece.size()] - v[i];
-    if (edge.norm() > u.norm()) u = edge;
+namespace {
+
+// The cells of a convex piece: nu × nw equal divisions of its extent along u (its longest
+// edge's direction) and w, the cell (i, j) the piece clipped to [i, i + 1) × [j, j + 1).
+struct CellGrid {
+  Vec3 u, w;
+  double u0 = 0.0, u1 = 0.0, w0 = 0.0, w1 = 0.0;
+  int nu = 1, nw = 1;
+
+  CellGrid(const ConvexPolygon& piece, double size) {
+    const std::vector<Vec3>& v = piece.vertices();
+    u = Vec3::Zero();
+    for (int i = 0; i < piece.size(); ++i) {
+      const Vec3 edge = v[(i + 1) % piece.size()] - v[i];
+      if (edge.norm() > u.norm()) u = edge;
+    }
+    u.normalize();
+    w = piece.normal().cross(u).normalized();
+    u0 = INFINITY, u1 = -INFINITY, w0 = INFINITY, w1 = -INFINITY;
+    for (const Vec3& p : v) {
+      u0 = std::min(u0, p.dot(u)), u1 = std::max(u1, p.dot(u));
+      w0 = std::min(w0, p.dot(w)), w1 = std::max(w1, p.dot(w));
+    }
+    nu = std::max(1, static_cast<int>(std::ceil((u1 - u0) / size - 1e-9)));
+    nw = std::max(1, static_cast<int>(std::ceil((w1 - w0) / size - 1e-9)));
   }
-  u.normalize();
-  const Vec3 w = piece.normal().cross(u).normalized();
-  double u0 = INFINITY, u1 = -INFINITY, w0 = INFINITY, w1 = -INFINITY;
-  for (const Vec3& p : v) {
-    u0 = std::min(u0, p.dot(u)), u1 = std::max(u1, p.dot(u));
-    w0 = std::min(w0, p.dot(w)), w1 = std::max(w1, p.dot(w));
+
+  // `polygon` clipped to the rows [i0, i1) along u (the grid's own planes, so that a range's
+  // piece holds the cells within it).
+  ConvexPolygon alongU(ConvexPolygon polygon, int i0, int i1, double tolerance) const {
+    if (i0 > 0)
+      polygon = polygon.clipped(Plane{-u, -(u0 + (u1 - u0) * double(i0) / nu)}, tolerance);
+    if (i1 < nu) polygon = polygon.clipped(Plane{u, u0 + (u1 - u0) * double(i1) / nu}, tolerance);
+    return polygon;
   }
-  const int nu = std::max(1, static_cast<int>(std::ceil((u1 - u0) / size - 1e-9)));
-  const int nw = std::max(1, static_cast<int>(std::ceil((w1 - w0) / size - 1e-9)));
-  std::vector<ConvexPolygon> cells;
-  for (int i = 0; i < nu; ++i) {
-    ConvexPolygon strip = piece;
-    if (i > 0) strip = strip.clipped(Plane{-u, -(u0 + (u1 - u0) * double(i) / nu)}, tolerance);
-    if (i + 1 < nu) strip = strip.clipped(Plane{u, u0 + (u1 - u0) * double(i + 1) / nu}, tolerance);
-    for (int j = 0; j < nw && !strip.empty(); ++j) {
-      ConvexPolygon cell = strip;
-      if (j > 0) cell = cell.clipped(Plane{-w, -(w0 + (w1 - w0) * double(j) / nw)}, tolerance);
-      if (j + 1 < nw) cell = cell.clipped(Plane{w, w0 + (w1 - w0) * double(j + 1) / nw}, tolerance);
-      if (!cell.empty() && cell.area() > tolerance * size) cells.push_back(cell);
+  // The same for the columns [j0, j1) along w.
+  ConvexPolygon alongW(ConvexPolygon polygon, int j0, int j1, double tolerance) const {
+    if (j0 > 0)
+      polygon = polygon.clipped(Plane{-w, -(w0 + (w1 - w0) * double(j0) / nw)}, tolerance);
+    if (j1 < nw) polygon = polygon.clipped(Plane{w, w0 + (w1 - w0) * double(j1) / nw}, tolerance);
+    return polygon;
+  }
+};
+
+// The cells of `piece` at `size` (as cutIntoCells), each with the block of `group` × `group`
+// cells that holds it: blocks[k] is that block's polygon, block[c] cell c's.
+struct CellsInBlocks {
+  std::vector<ConvexPolygon> cells, blocks;
+  std::vector<int> block;
+};
+
+CellsInBlocks cutIntoBlocks(const ConvexPolygon& piece, double size, int group, double tolerance) {
+  const CellGrid grid(piece, size);
+  CellsInBlocks out;
+  const int blocksAlongW = (grid.nw + group - 1) / group;
+  std::vector<int> blockAt;  // per block (along u, along w): index into out.blocks, -1 none yet
+  for (int i = 0; i < grid.nu; ++i) {
+    if (i % group == 0) blockAt.assign(static_cast<std::size_t>(blocksAlongW), -1);
+    const ConvexPolygon strip = grid.alongU(piece, i, i + 1, tolerance);
+    for (int j = 0; j < grid.nw && !strip.empty(); ++j) {
+      ConvexPolygon cell = grid.alongW(strip, j, j + 1, tolerance);
+      if (cell.empty() || !(cell.area() > tolerance * size)) continue;
+      int& b = blockAt[static_cast<std::size_t>(j / group)];
+      if (b < 0) {
+        const int i0 = i / group * group, j0 = j / group * group;
+        b = static_cast<int>(out.blocks.size());
+        out.blocks.push_back(
+            grid.alongW(grid.alongU(piece, i0, std::min(i0 + group, grid.nu), tolerance), j0,
+                        std::min(j0 + group, grid.nw), tolerance));
+      }
+      out.cells.push_back(std::move(cell));
+      out.block.push_back(b);
     }
   }
-  return cells;
+  return out;
+}
+
+}  // namespace
+
+std::vector<ConvexPolygon> cutIntoCells(const ConvexPolygon& piece, double size, double tolerance) {
+  return cutIntoBlocks(piece, size, 1, tolerance).cells;
 }
 
 double longestEdge(const ConvexPolygon& polygon) {
@@ -99,6 +151,7 @@ SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, 
                        double tolerance) {
   SurfaceMesh refined;
   refined.blackSolids = mesh.blackSolids;
+  refined.casterBlocks = mesh.casterBlocks;  // a cell lies in its element, so in its block
   for (std::size_t i = 0; i < mesh.elements.size(); ++i) {
     const SurfaceElement& element = mesh.elements[i];
     if (!split[i]) {
@@ -107,8 +160,8 @@ SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, 
     }
     for (ConvexPolygon& cell : halved(element.polygon, tolerance)) {
       const double area = cell.area();
-      refined.elements.push_back(
-          {std::move(cell), element.solid, element.face, element.reflectance, area});
+      refined.elements.push_back({std::move(cell), element.solid, element.face, element.reflectance,
+                                  area, element.casterBlock});
     }
   }
   placeNodes(refined, order);
@@ -187,7 +240,7 @@ std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::str
     const Vec3 reflectance = scene.materials[scene.solids[face.solid].material].reflectance;
     for (ConvexPolygon& piece : faceOutsideSolids(face.polygon, others, tolerance)) {
       const double area = piece.area();
-      pieces.push_back({std::move(piece), face.solid, face.face, reflectance, area});
+      pieces.push_back({std::move(piece), face.solid, face.face, reflectance, area, -1});
     }
   }
   return pieces;
@@ -196,11 +249,18 @@ std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::str
 SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
   if (!(options.elementSize > 0.0)) throw std::invalid_argument("element size must be positive");
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
+  // Cells per block side: blocks of at most casterBlockSize, at least one cell.
+  const int group =
+      std::max(1, static_cast<int>(std::floor(options.casterBlockSize / options.elementSize)));
   SurfaceMesh mesh;
   for (const SurfacePiece& piece : surfacePieces(scene, mesh.blackSolids)) {
-    for (ConvexPolygon& cell : cutIntoCells(piece.polygon, options.elementSize, tolerance)) {
-      const double area = cell.area();
-      mesh.elements.push_back({std::move(cell), piece.solid, piece.face, piece.reflectance, area});
+    CellsInBlocks cut = cutIntoBlocks(piece.polygon, options.elementSize, group, tolerance);
+    const auto firstBlock = static_cast<int>(mesh.casterBlocks.size());
+    for (ConvexPolygon& block : cut.blocks) mesh.casterBlocks.push_back(std::move(block));
+    for (std::size_t c = 0; c < cut.cells.size(); ++c) {
+      const double area = cut.cells[c].area();
+      mesh.elements.push_back({std::move(cut.cells[c]), piece.solid, piece.face, piece.reflectance,
+                               area, firstBlock + cut.block[c]});
     }
   }
   placeNodes(mesh, options.quadratureOrder);

@@ -27,11 +27,18 @@ struct MeshOptions {
   // (unevenElements in interreflection.cpp).
   double refinement = 1e-3;
   int refinementLevels = 3;
-  // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000, and as much again
-  // for the system the solver iterates on).
+  // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000; the solver works
+  // on products with it and holds no other N × N matrix).
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
   // any refinement is refused with the element size that would fit.
   std::size_t maxElements = 8000;
+  // The elements of a piece are grouped in square blocks of cells, at most this long (m), that
+  // share their shadow casters in the dense transfer (elementSceneSharingCasters): the casters
+  // are built per block, not per element (a room of hundreds of solids and thousands of
+  // elements would hold millions of shadow volumes), and a block's volumes hold its elements'
+  // (EmittingFaceShadows::casterOwner), so they only cull less tightly. 2 m: the largest source
+  // a link of the hierarchical transfer takes (HierarchyOptions::largestLinkedNode).
+  double casterBlockSize = 2.0;
   // The transfer: 0 the dense element-to-element matrix; above 0 hierarchical links whose
   // estimated error is at most this (HierarchyOptions::linkError), with no element limit.
   static constexpr double kDefaultLinkError = 2e-4;
@@ -43,7 +50,8 @@ struct SurfaceElement {
   int solid = -1;         // index into Scene::solids
   int face = -1;          // face of that solid
   Vec3 reflectance = Vec3::Zero();
-  double area = 0.0;  // m²
+  double area = 0.0;     // m²
+  int casterBlock = -1;  // index into SurfaceMesh::casterBlocks, -1 none
 };
 
 struct SurfaceMesh {
@@ -53,6 +61,9 @@ struct SurfaceMesh {
   std::vector<SamplePoint> nodes;
   std::vector<double> weights;
   std::vector<std::size_t> nodeStart;
+  // Convex polygons, each in the plane of a piece, that hold the elements naming them
+  // (SurfaceElement::casterBlock; MeshOptions::casterBlockSize).
+  std::vector<ConvexPolygon> casterBlocks;
   // Solids that light can reach but that have no material (black), by name: for a warning.
   std::vector<std::string> blackSolids;
 

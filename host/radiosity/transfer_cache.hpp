@@ -22,7 +22,8 @@ namespace penumbra {
 struct GeometryTransfer {
   // Dense (MeshOptions::linkError 0): the elements as unit sources, the kernel on them, and the
   // element-to-element matrix.
-  Scene elements;                             // elementScene: every element at 1 cd/m²
+  Scene elements;  // elementSceneSharingCasters: every element at 1 cd/m², after its blocks
+  std::size_t firstElement = 0;               // element j is source firstElement + j
   std::unique_ptr<IlluminanceEngine> gather;  // the kernel on `elements`
   Eigen::MatrixXd transfer;                   // elementTransfer
   // Hierarchical: the element trees (whose leaves are the mesh) and the links between them.

@@ -51,6 +51,10 @@ struct Source {
   // its own plane: this face's shadow casters are that face's (shadow/scene_shadows.hpp). -1:
   // its own. Set for the element trees' nodes, never read from a scene file.
   int castersOf = -1;
+  // Emits nothing: the source's one face only holds shadow casters that later sources share
+  // (castersOf), and the engine gives it E = 0 without evaluating it. Set for the dense
+  // transfer's element blocks, never read from a scene file.
+  bool castersOnly = false;
   double emittingArea() const;  // m², all faces
   Vec3 polynomialAxis(const ConvexPolygon& face) const {
     return luminanceAxis.isZero() ? Vec3(-face.normal()) : luminanceAxis;

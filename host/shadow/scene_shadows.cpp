@@ -19,8 +19,12 @@ SceneShadows buildSceneShadows(const Scene& scene,
   for (std::size_t s = 0; s < scene.sources.size(); ++s) {
     firstFace[s] = static_cast<int>(shadows.faces.size());
     for (const ConvexPolygon& face : scene.sources[s].faces)
-      shadows.faces.push_back(EmittingFaceShadows{
-          static_cast<int>(s), face, {}, findAperture(scene, face, shadows.tolerance)});
+      shadows.faces.push_back(EmittingFaceShadows{static_cast<int>(s),
+                                                  face,
+                                                  {},
+                                                  findAperture(scene, face, shadows.tolerance),
+                                                  -1,
+                                                  !scene.sources[s].castersOnly});
   }
   for (std::size_t s = 0; s < scene.sources.size(); ++s) {
     const int owner = scene.sources[s].castersOf;

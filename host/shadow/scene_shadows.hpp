@@ -36,6 +36,7 @@ struct EmittingFaceShadows {
   // trees' nodes share their ancestor's: a tree of thousands of nodes over a room of hundreds of
   // solids builds its pieces' casters, not every node's.
   int casterOwner = -1;
+  bool emits = true;  // false for a source's face that only holds casters (Source::castersOnly)
   std::size_t casterFace(std::size_t self) const {
     return casterOwner < 0 ? self : static_cast<std::size_t>(casterOwner);
   }
