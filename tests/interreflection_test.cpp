@@ -196,7 +196,9 @@ TEST(Interreflection, FarFieldTransferKeepsTheBalance) {
     for (Eigen::Index j = 0; j < t.cols(); ++j) far += t(i, j) != exact(i, j) ? 1 : 0;
   std::printf("%zu elements, %zu of %zu pairs far\n", mesh.elements.size(), far,
               static_cast<std::size_t>(t.size()));
-  if (!kSanitizedBuild) EXPECT_GT(far, static_cast<std::size_t>(t.size()) / 2);
+  if (!kSanitizedBuild) {
+    EXPECT_GT(far, static_cast<std::size_t>(t.size()) / 2);
+  }
 
   // A row sums to the kernel's E from the whole hemisphere at four points: π to the kernel's
   // relative tolerance.
