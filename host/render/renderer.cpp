@@ -70,6 +70,11 @@ struct Renderer::State {
   std::vector<Vec3> solidReflectance;
   SkyBackground background;            // what rays that meet no solid show
   std::vector<double> transmittances;  // 1 and each opening's τ: the sun's lit levels
+  Vec3 sunDirection = Vec3::UnitZ();   // unit, towards the sun's centre
+  // The sine of the sun's angular radius: a point whose horizon lies lower than that below the
+  // sun sees the whole disk above it.
+  static inline const double sunRadiusSine =
+      std::sin(0.5 * kSunDiameterDegrees * kRadiansPerDegree);
 
   State(compute::Device& d, const Scene& s, EngineOptions e, std::optional<MeshOptions> m)
       : device(&d),
@@ -97,6 +102,7 @@ struct Renderer::State {
                                               });
     }
     background = SkyBackground(*scene);
+    if (scene->sun) sunDirection = scene->sun->direction.normalized();
     transmittances = {1.0};
     if (scene->room)
       for (const Opening& opening : scene->room->openings)
@@ -177,11 +183,9 @@ struct Renderer::State {
         if (!sun.empty()) {
           e += sun[local];
           light += Vec3::Constant(sun[local]);
-          const Sun& solar = *scene->sun;
-          const double cosine = points[local].normal.dot(solar.direction.normalized());
-          const double full = cosine >= std::sin(0.5 * kSunDiameterDegrees * kRadiansPerDegree)
-                                  ? solar.directNormalIlluminance * cosine
-                                  : 0.0;
+          const double cosine = points[local].normal.dot(sunDirection);
+          const double full =
+              cosine >= sunRadiusSine ? scene->sun->directNormalIlluminance * cosine : 0.0;
           classes[i * columns + columns - 1] =
               sunShadowClass(sun[local], beam[local] != 0, full, transmittances);
         }
