@@ -3,6 +3,8 @@
 // invariants of the total illuminance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <numbers>
