@@ -8,10 +8,11 @@
  *       direction of the face that does not see P (so the hole is on their right).
  * Each edge against a convex cone is one parameter interval (Cyrus–Beck on planes through P).
  *
- * Tie rule (one rule everywhere): when an edge lies in a boundary plane of another region, the
- * two regions' visible sides coincide or are opposite. Coincide: the edge is kept once, by the
- * region of lowest index (the source is lowest, then occluders in list order); opposite: the
- * visible region is empty there and the edge is dropped. So two boxes side by side drop their
+ * Tie rule (one rule everywhere): when an edge lies in a boundary plane of another region (and
+ * that plane's edge in the first edge's plane: edge_in_plane), the two regions' visible sides
+ * coincide or are opposite. Coincide: the edge is kept once, by the region of lowest index (the
+ * source is lowest, then occluders in list order); opposite: the visible region is empty there
+ * and the edge is dropped. So two boxes side by side drop their
  * shared contour edge, a duplicated occluder counts once, and an occluder edge collinear with
  * a source edge never leaks (docs/method.md, "The tie rule").
  *
