@@ -3,6 +3,8 @@
 // invariants of the total illuminance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <numbers>
@@ -13,6 +15,7 @@
 #include "radiosity/element_transfer.hpp"
 #include "radiosity/interreflection.hpp"
 #include "sanitized_build.hpp"
+#include "scene/daylight.hpp"
 #include "scene/scene_loader.hpp"
 #include "test_device.hpp"
 #include "test_files.hpp"
@@ -321,6 +324,34 @@ TEST(Interreflection, BoxRoomAgainstCollocation) {
 
 // The dense solver's limit: a mesh larger before refinement is refused with an element size
 // that fits; refinement stops at the limit, splitting the most uneven elements first.
+// A window cuts its wall into four slabs that meet at its sides. The floor and ceiling under
+// them are cut along each slab's planes grown by the scene's tolerance, so at a window side the
+// cuts of two slabs lie twice the tolerance apart: a strip that narrow must not become elements
+// (its two long edges coincide in the kernel's float, and such a sliver gave light on lines where
+// an occluder's edge met it in one plane). Every element is a cell of at least the window's
+// 0.3 m wall strips, and the floor's elements cover its 4 × 3 m.
+TEST(Interreflection, NoSliverElementsWhereAWindowsSlabsMeet) {
+  TempDir dir("interreflection");
+  const auto file = dir.path() / "window.yaml";
+  std::ofstream(file) << "penumbra: 1\nmaterials:\n  paint: 0.5\nroom:\n  size: [4, 3, 3]\n"
+                         "  materials: {floor: paint, ceiling: paint, walls: paint}\n"
+                         "  openings:\n    - {name: window, wall: y0, x: 1.0, z: 0.9, width: "
+                         "2.0, height: 1.5}\nsources:\n  - {name: sky, opening: window, "
+                         "luminance: 4000}\n";
+  const Scene scene = loadScene(file);
+  const SurfaceMesh mesh = buildSurfaceMesh(skyFacesScene(scene), MeshOptions{});
+  ASSERT_FALSE(mesh.elements.empty());
+  double floorArea = 0.0, narrowest = INFINITY;
+  for (const SurfaceElement& element : mesh.elements) {
+    narrowest = std::min(narrowest, element.area / longestEdge(element.polygon));
+    const Vec3 centre = element.polygon.centroid();
+    if (element.polygon.normal().z() > 0.5 && std::abs(centre.z()) < 1e-6)
+      floorArea += element.area;
+  }
+  EXPECT_GT(narrowest, 0.1) << "m: area / longest edge of the narrowest element";
+  EXPECT_NEAR(floorArea, 12.0, 1e-6 * 12.0);
+}
+
 TEST(Interreflection, MeshesStayWithinTheDenseSolversLimit) {
   TempDir dir("interreflection");
   const Scene scene = closedRoom(dir, "[4, 3, 3]");
