@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "tonemap/display_spaces.hpp"
+#include "tonemap/log_scene.hpp"
 #include "tonemap/region_map.hpp"
 #include "tonemap/vertex_mesh.hpp"
 
@@ -19,7 +19,7 @@ namespace penumbra {
 enum class ConstraintLevel : uint8_t { Strong, Medium, Weak };
 
 struct ConstraintWeights {
-  double strong = 10, medium = 1, weak = 0.1;
+  double strong = 10, medium = 100, weak = 0.1;
 };
 
 struct ConstraintSystem {
@@ -32,15 +32,7 @@ struct ConstraintSystem {
   int threeVariableRows = 0;
 };
 
-// The largest ratio a row asks for is 1 / LowerBound, the most the display can show. A ratio
-// beyond it (a window beside a wall, a lit desk beside an umbra where E = 0) could not be met
-// anyway, and squared it would put 1e8 and more into the normal matrix beside weights near 1,
-// which no double-precision factorisation resolves. With the cap such a row asks for the display's
-// full range across the edge, which is what it can give.
-double requestedRatio(double brighter, double darker, double lowerBound);
-
 ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& regions,
-                                       const DisplaySpaces& spaces,
-                                       const ConstraintWeights& weights);
+                                       const LogScene& scene, const ConstraintWeights& weights);
 
 }  // namespace penumbra

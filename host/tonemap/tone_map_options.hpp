@@ -25,7 +25,7 @@ struct ToneMapOptions {
   // linear Space-3 value (weak), each level about two orders of magnitude in the squared
   // residual, which is what the staircase test in tests/tonemap_test.cpp needs.
   double strong = 10.0;
-  double medium = 1.0;
+  double medium = 100.0;
   double weak = 0.1;
   // Largest spacing in pixels between the vertices of a region (interior lattice and boundary).
   int lattice = 8;

@@ -23,12 +23,14 @@
 
 #include "image/images.hpp"
 #include "tonemap/display_spaces.hpp"
+#include "tonemap/log_scene.hpp"
 #include "tonemap/region_map.hpp"
 #include "tonemap/vertex_mesh.hpp"
 
 namespace penumbra {
 
 ScalarImage interpolateDisplayValues(const VertexMesh& mesh, const RegionMap& regions,
-                                     const DisplaySpaces& spaces, const Eigen::VectorXd& values);
+                                     const DisplaySpaces& spaces, const LogScene& scene,
+                                     const Eigen::VectorXd& values);
 
 }  // namespace penumbra
