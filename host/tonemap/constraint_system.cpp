@@ -182,7 +182,8 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
     rows.add(
         ConstraintLevel::Medium, weights.medium, {{a, 1.0}, {b, -1.0}},
         scene.insideTarget(logAt(scene, regions, va.x, va.y) - logAt(scene, regions, vb.x, vb.y),
-                           std::hypot(va.x - vb.x, va.y - vb.y)));
+                           std::hypot(va.x - vb.x, va.y - vb.y), regions.index(va.x, va.y),
+                           regions.index(vb.x, vb.y)));
   }
 
   // Weak: every vertex near its Space-3 value. Also the start of the solve (thesis 5.4).

@@ -18,15 +18,19 @@
 namespace penumbra {
 
 struct LogScene {
-  std::vector<float> logValue;  // per pixel: log V₀, floored at 1e-4 of MaxRGB
+  std::vector<float> logValue;           // per pixel: log V₀, floored at 1e-4 of MaxRGB
+  std::vector<float> gradientMagnitude;  // per pixel: |∇ log V₀| within its region, per pixel
   double logWhite = 0;  // log of the V₀ where the curve's y = 1: the clip map's automatic white
   double logLowerBound = 0;  // log LowerBound: the darkest display V
 
   // The display log ratio asked for across an edge whose scene log ratio is d (sign kept).
   double edgeTarget(double d) const;
-  // The display log ratio asked for between two vertices of one region `distance` pixels apart
-  // whose scene log ratio is d (sign kept).
-  double insideTarget(double d, double distance) const;
+  // The display log ratio asked for between two vertices of one region, at pixels a and b
+  // `distance` pixels apart, whose scene log ratio is d: d·(G/k)^(β−1) with G the log gradient's
+  // magnitude there (Fattal et al.'s attenuation, eq. 3, with k = kInsideKnee and
+  // β = kInsideExponent). One factor per place, whatever the pair's direction, so that the rows
+  // of a smooth region agree with each other.
+  double insideTarget(double d, double distance, size_t a, size_t b) const;
   // Space 3 at a pixel: log of LowerBound + (1 − LowerBound)·y/(1 + y), y = V₀ / white.
   double exposedValue(size_t pixel) const;
 };
