@@ -171,7 +171,7 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
     }
   }
 
-  // Medium: neighbouring vertices of one region keep their Space-0 ratio.
+  // Medium: neighbouring vertices of one region, their attenuated Space-0 log ratio.
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < n; ++i) addRegionNeighbours(pairs, mesh, regions, i);
   std::sort(pairs.begin(), pairs.end());
@@ -186,7 +186,8 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
                            regions.index(vb.x, vb.y)));
   }
 
-  // Weak: every vertex near its Space-3 value. Also the start of the solve (thesis 5.4).
+  // Weak: every vertex near its Space-3 value, the exposure curve. Also the start of the solve
+  // (thesis 5.4).
   system.start.resize(n);
   for (int i = 0; i < n; ++i) {
     const MeshVertex& v = mesh.vertices[i];

@@ -1,11 +1,14 @@
 #pragma once
-// The constraint hierarchy as one weighted bounded least-squares problem (thesis eq. 5.8):
-//   minimise ||A V - b||²  subject to  LowerBound <= V <= 1   (required, eq. 4.17)
-// where each row of A is one constraint multiplied by its level's weight:
-//   strong  across every visible edge, the Space-0 ratio (eq. 4.21, 4.22, 4.24)
-//   medium  between neighbouring vertices of one region, their Space-0 ratio (eq. 4.34 when the
-//           region is flat, where the ratio is 1)
-//   weak    every vertex at its Space-3 value (eq. 4.35)
+// The constraint hierarchy as one weighted bounded least-squares problem (thesis eq. 5.8) on
+// x = log V per vertex:
+//   minimise ||A x - b||²  subject to  log LowerBound <= x <= 0   (required, eq. 4.17)
+// where each row of A is one constraint multiplied by its level's weight (log_scene.hpp gives
+// the targets):
+//   strong  across every visible edge, the compressed Space-0 log ratio (eq. 4.21, 4.22, 4.24 in
+//           logs)
+//   medium  between neighbouring vertices of one region, their attenuated Space-0 log ratio (0
+//           on a flat region, eq. 4.34)
+//   weak    every vertex at the log of its Space-3 value, the exposure curve (eq. 4.35)
 #include <Eigen/Sparse>
 #include <cstdint>
 #include <vector>
