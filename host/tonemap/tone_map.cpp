@@ -40,7 +40,7 @@ void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOpt
   }
 }
 
-// Root mean square and largest |residual| per level, in V units (each row divided by its weight).
+// Root mean square and largest |residual| per level, in log V (each row divided by its weight).
 void reportResiduals(const ConstraintSystem& system, const Eigen::VectorXd& values,
                      ToneMapStats& stats) {
   const Eigen::VectorXd residual = system.matrix * values - system.target;
