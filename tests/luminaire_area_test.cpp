@@ -545,7 +545,8 @@ std::filesystem::path writeNarrowDownlight(const TempDir& dir, double diameterM)
     const double g = std::cos(gammaDeg * kPi / 180);
     return gammaDeg < 90 ? kI0 * g * (0.03 + 0.97 * std::pow(g, 39)) : 0.0;
   };
-  return writeFile(dir.path(), "downlight.ies", tf::iesText(spec));
+  const std::string name = "downlight-" + std::to_string(std::lround(diameterM * 1000)) + "mm.ies";
+  return writeFile(dir.path(), name, tf::iesText(spec));
 }
 
 TEST(AreaModelKernel, MatchesTheReferenceOnEveryPathOccludedOrNot) {
@@ -647,6 +648,9 @@ TEST(AreaModelKernel, NarrowBeamsMatchQuadratureOverTheOpening) {
   };
   const Case cases[] = {
       {"narrow downlight, 0.15 m disk", writeNarrowDownlight(dir, 0.15)},
+      // The example file's opening (data/luminaires/narrow-downlight.ies): 3 m away, each arc's
+      // term is of the order of 0.08 m / 3 m rad and the terms cancel to E, of its square.
+      {"narrow downlight, 0.08 m disk", writeNarrowDownlight(dir, 0.08)},
       {"spot 1 + cos^24, 0.3 x 0.3 m", writeSymmetricIes(dir, "spot.ies", 0.3, 0.3, spotCandela)},
   };
   std::vector<SamplePoint> points;
