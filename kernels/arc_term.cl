@@ -1,6 +1,6 @@
 /* One boundary arc's term, taken relative to a reference point of its contour, for the unoccluded
- * paths of a face small against its distance from P (lambert.cl, PN_SMALL_FACE; docs/method.md,
- * "Precision of small, distant sources").
+ * paths of a face small against its distance from P (lambert.cl, PN_SMALL_FACE; docs/method.md, the
+ * precision note).
  *
  * Lambert's term of the arc a → b (vectors from P) is T = θ n·(b × a) / |b × a|, θ the angle
  * between a and b. For a small, distant face each term is of the order of the arc's angle while
