@@ -33,8 +33,8 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
 }
 
 /* A face small against its distance from P: each term above is good to a few roundings of
- * itself, but the terms are of the order of the face's angular size ρ (its largest vertex offset
- * from the reference vertex over that vertex's distance) and cancel to E, of the order of ρ², so
+ * itself, but the terms are of the order of the face's angular size ρ (the largest offset of its
+ * vertex 0 to another vertex over vertex 0's distance) and cancel to E, of the order of ρ², so
  * E keeps only about ρ of their relative precision. Where ρ < PN_SMALL_FACE in some lane of the
  * work-item the face's terms are taken relative to its reference vertex (arc_term.cl), which
  * keeps E to a few roundings of itself; elsewhere the terms above, unchanged. Measured against
@@ -71,10 +71,21 @@ inline float3 vertex_offset(PnSourceFace face, int i, int k, const PnSceneTables
   return (v.hi.xyz - v0.hi.xyz) + (v.lo.xyz - v0.lo.xyz);
 }
 
-/* Whether the face is small against its distance in some lane (PN_SMALL_FACE); if so, *centre is
- * its reference point (vertex *k) from each lane's P, with the face's spread about it. */
+/* Whether the face is small against its distance in some lane: its vertex 0's largest offset to
+ * another vertex below PN_SMALL_FACE of vertex 0's distance (read from the hi parts: a criterion,
+ * not a term). If so, *centre is its reference point (vertex *k) from each lane's P, with the
+ * face's spread about it. The test costs a pass over the vertices and three products per lane. */
 inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
                         PnCentre8* centre, int* k_out) {
+  const float4 first = tables->sourceVertices[face.firstVertex].hi;
+  float size2 = 0.0f;
+  for (int i = 1; i < face.vertexCount; ++i) {
+    const float4 d = tables->sourceVertices[face.firstVertex + i].hi - first;
+    size2 = fmax(size2, dot(d.xyz, d.xyz));
+  }
+  float8 x, y, z;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &x, &y, &z);
+  if (!pn_any(size2 < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z))) return false;
   const int k = face_reference_vertex(face, tables);
   *k_out = k;
   float reach2 = 0.0f;
@@ -82,10 +93,9 @@ inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTabl
     const float3 o = vertex_offset(face, i, k, tables);
     reach2 = fmax(reach2, dot(o, o));
   }
-  float8 x, y, z;
   pn_from8(tables->sourceVertices[face.firstVertex + k], pts, &x, &y, &z);
   *centre = pn_centre8(x, y, z, (float8)(reach2));
-  return pn_any(centre->spread < PN_SMALL_FACE);
+  return true;
 }
 
 /* Vertex i of a face: from P, or (a small face) its offset from the reference vertex k. */
@@ -217,7 +227,7 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   const int m = face.vertexCount;
   const PnEmission em = emission_of(face, tables);
   PnCentre8 small;
-  int k;
+  int k = 0;
   const PnCentre8* centre = small_face8(pts, face, tables, &small, &k) ? &small : 0;
   float8 ax, ay, az, bx, by, bz;
   face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
@@ -247,7 +257,7 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const PnEmission em = emission_of(face, tables);
   PnCentre8 small;
-  int k;
+  int k = 0;
   const PnCentre8* centre = small_face8(pts, face, tables, &small, &k) ? &small : 0;
   HorizonSum8 h;
   horizon_begin8(&h, centre, nx, ny, nz, &em);
