@@ -43,9 +43,9 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * up to 9.6e-5 of E at ρ below 0.0125, 1.6e-5 at 0.025 to 0.05, 6.8e-6 at 0.05 to 0.1 and 3.1e-6
  * at 0.1 to 0.2; the relative terms by 1.0e-6 at most below 0.2. Both grow with foreshortening:
  * 11.5° above the horizons, each term alone errs by 2.4e-5 at 0.1 to 0.2 and the relative terms
- * by 6.8e-6. The relative terms cost more per arc (an fma-accurate cross product, a second square
- * root, the series), so the faces of the common case, a room's ceiling panels seen from its work
- * plane (ρ above 0.1 within 8.5 m of a 0.6 m panel), take the terms above. */
+ * by up to 6.8e-6. The relative terms cost more per arc (an fma-accurate cross product, a second
+ * square root, the series), so the faces of the common case, a room's ceiling panels seen from its
+ * work plane (ρ above 0.1 within 8.5 m of a 0.6 m panel), take the terms above. */
 #define PN_SMALL_FACE 0.1f
 
 /* The reference point of a small face (arc_term.cl): its least vertex in x, then y, then z, so
