@@ -71,20 +71,16 @@ inline float3 vertex_offset(PnSourceFace face, int i, int k, const PnSceneTables
   return (v.hi.xyz - v0.hi.xyz) + (v.lo.xyz - v0.lo.xyz);
 }
 
-/* Whether the face is small against its distance in some lane: its vertex 0's largest offset to
- * another vertex below PN_SMALL_FACE of vertex 0's distance (read from the hi parts: a criterion,
- * not a term). If so, *centre is its reference point (vertex *k) from each lane's P, with the
- * face's spread about it. The test costs a pass over the vertices and three products per lane. */
+/* Whether the face is small against its distance in some lane: the distance from its vertex 0 to
+ * its vertex m/2 (the opposite corner of a rectangle, the opposite vertex of a disk's polygon)
+ * below PN_SMALL_FACE of vertex 0's distance (x, y, z from P), read from the hi parts: a
+ * criterion, not a term, at one more vertex and three products per lane. If so, *centre is the
+ * face's reference point (vertex *k) from each lane's P, with the face's spread about it. */
 inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
-                        PnCentre8* centre, int* k_out) {
-  const float4 first = tables->sourceVertices[face.firstVertex].hi;
-  float size2 = 0.0f;
-  for (int i = 1; i < face.vertexCount; ++i) {
-    const float4 d = tables->sourceVertices[face.firstVertex + i].hi - first;
-    size2 = fmax(size2, dot(d.xyz, d.xyz));
-  }
-  float8 x, y, z;
-  pn_from8(tables->sourceVertices[face.firstVertex], pts, &x, &y, &z);
+                        float8 x, float8 y, float8 z, PnCentre8* centre, int* k_out) {
+  const float4 d = tables->sourceVertices[face.firstVertex + face.vertexCount / 2].hi -
+                   tables->sourceVertices[face.firstVertex].hi;
+  const float size2 = dot(d.xyz, d.xyz);
   if (!pn_any(size2 < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z))) return false;
   const int k = face_reference_vertex(face, tables);
   *k_out = k;
@@ -93,8 +89,9 @@ inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTabl
     const float3 o = vertex_offset(face, i, k, tables);
     reach2 = fmax(reach2, dot(o, o));
   }
-  pn_from8(tables->sourceVertices[face.firstVertex + k], pts, &x, &y, &z);
-  *centre = pn_centre8(x, y, z, (float8)(reach2));
+  float8 cx, cy, cz;
+  pn_from8(tables->sourceVertices[face.firstVertex + k], pts, &cx, &cy, &cz);
+  *centre = pn_centre8(cx, cy, cz, (float8)(reach2));
   return true;
 }
 
@@ -228,9 +225,10 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   const PnEmission em = emission_of(face, tables);
   PnCentre8 small;
   int k = 0;
-  const PnCentre8* centre = small_face8(pts, face, tables, &small, &k) ? &small : 0;
   float8 ax, ay, az, bx, by, bz;
-  face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
+  const PnCentre8* centre = small_face8(pts, face, tables, ax, ay, az, &small, &k) ? &small : 0;
+  if (centre) face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
     face_vertex8(pts, face, i + 1 == m ? 0 : i + 1, k, tables, centre, &bx, &by, &bz);
@@ -258,12 +256,13 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   const PnEmission em = emission_of(face, tables);
   PnCentre8 small;
   int k = 0;
-  const PnCentre8* centre = small_face8(pts, face, tables, &small, &k) ? &small : 0;
+  float8 ax, ay, az, bx, by, bz;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
+  const PnCentre8* centre = small_face8(pts, face, tables, ax, ay, az, &small, &k) ? &small : 0;
   HorizonSum8 h;
   horizon_begin8(&h, centre, nx, ny, nz, &em);
   const int m = face.vertexCount;
-  float8 ax, ay, az, bx, by, bz;
-  face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
+  if (centre) face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
   float8 ha =
       centre ? h.centre_height + (nx * ax + ny * ay + nz * az) : nx * ax + ny * ay + nz * az;
   for (int i = 0; i < m; ++i) {
