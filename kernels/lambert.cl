@@ -33,8 +33,9 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
 }
 
 /* A face small against its distance from P: each term above is good to a few roundings of
- * itself, but the terms are of the order of the face's angular size ρ (the largest offset of its
- * vertex 0 to another vertex over vertex 0's distance) and cancel to E, of the order of ρ², so
+ * itself, but the terms are of the order of the face's angular size ρ (its size over its
+ * distance; the switch reads the distance from vertex 0 to vertex m/2 over vertex 0's distance, a
+ * square's diagonal in the figures below) and cancel to E, of the order of ρ², so
  * E keeps only about ρ of their relative precision. Where ρ < PN_SMALL_FACE in some lane of the
  * work-item the face's terms are taken relative to its reference vertex (arc_term.cl), which
  * keeps E to a few roundings of itself; elsewhere the terms above, unchanged. Measured against
