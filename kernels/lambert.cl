@@ -217,6 +217,23 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   return h->sum.s + h->sum.c;
 }
 
+/* whole_face8 for a small face (small_face8): its terms relative to its reference vertex k. */
+inline float8 whole_small_face8(const Points8* pts, PnSourceFace face, int k,
+                                const PnCentre8* centre, const PnSceneTables* tables,
+                                const PnEmission* em) {
+  const int m = face.vertexCount;
+  float3 a = vertex_offset(face, 0, k, tables);
+  PnSum8 sum = {0.0f, 0.0f};
+  for (int i = 0; i < m; ++i) {
+    const float3 b = vertex_offset(face, i + 1 == m ? 0 : i + 1, k, tables);
+    pn_sum_add8(&sum,
+                arc_term8(centre, a.x, a.y, a.z, b.x, b.y, b.z, pts->nx, pts->ny, pts->nz, em));
+    a = b;
+  }
+  return select((float8)(0.0f), small_face_sum8(centre, sum.s + sum.c),
+                in_front8(face, pts->px, pts->py, pts->pz));
+}
+
 /* The same where no lane's horizon cuts the face (every vertex at height >= 0, as
  * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
  * gives there. */
@@ -224,22 +241,22 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const int m = face.vertexCount;
   const PnEmission em = emission_of(face, tables);
-  PnCentre8 small;
-  int k = 0;
   float8 ax, ay, az, bx, by, bz;
   pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
-  const PnCentre8* centre = small_face8(pts, face, tables, ax, ay, az, &small, &k) ? &small : 0;
-  if (centre) face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
+  PnCentre8 centre;
+  int k = 0;
+  if (small_face8(pts, face, tables, ax, ay, az, &centre, &k))
+    return whole_small_face8(pts, face, k, &centre, tables, &em);
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
-    face_vertex8(pts, face, i + 1 == m ? 0 : i + 1, k, tables, centre, &bx, &by, &bz);
-    pn_sum_add8(&sum, contour_term8(centre, ax, ay, az, bx, by, bz, nx, ny, nz, &em));
+    pn_from8(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], pts, &bx, &by,
+             &bz);
+    pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz, &em));
     ax = bx;
     ay = by;
     az = bz;
   }
-  return select((float8)(0.0f), small_face_sum8(centre, sum.s + sum.c),
-                in_front8(face, pts->px, pts->py, pts->pz));
+  return select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
 }
 
 inline bool horizon_cuts8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
