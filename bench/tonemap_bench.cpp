@@ -122,7 +122,7 @@ nlohmann::json benchSize(int width, int height, int boxes, int repeat, bool grad
     const RegionMap regions = findRegions(scene.faces);
     const VertexMesh mesh = buildVertexMesh(regions, options.lattice);
     const ConstraintSystem system = buildConstraintSystem(
-        mesh, regions, spaces, {options.strong, options.medium, options.weak});
+        mesh, regions, logScene(spaces, regions), {options.strong, options.medium, options.weak});
     const auto start = Clock::now();
     const auto solved = solveBoundedLeastSquares(system.matrix, system.target, system.lower,
                                                  system.upper, system.start);

@@ -176,6 +176,10 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       float8 f0 = e->mx * ax + e->my * ay + e->mz * az; /* inside the occluder's cone: > 0 */
       float8 f1 = e->mx * bx + e->my * by + e->mz * bz;
       int8 tied = use & in_plane8(f0, f1, la, lb);
+      if (pn_any(tied)) { /* and that plane's edge in this edge's plane (edge_in_plane8) */
+        const ContourEdge8* o = &cs->edge[k];
+        tied &= edge_in_plane8(msx, msy, msz, o->ax, o->ay, o->az, o->bx, o->by, o->bz);
+      }
       covers &= ~keeps_tied_edge8(tied, mex, mey, mez, e->mx, e->my, e->mz, owner, v);
       covers &= clip_interval_id8(f0, f1, use & ~tied, k, &t0, &t1, &id0, &id1);
     }

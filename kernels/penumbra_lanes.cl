@@ -266,8 +266,20 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
         if (!pn_any(use)) continue;
         float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
         float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
-        /* In a side plane of S': the source keeps it, or the visible region is empty there. */
+        /* In a side plane of S' whose edge lies in this edge's plane (edge_in_plane8): the
+         * source keeps it, or the visible region is empty there. */
         int8 tied = use & in_plane8(f0, f1, la, lb);
+        if (pn_any(tied)) {
+          const HorizonChord8* c = &s->chord;
+          if (i == m)
+            tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, c->exit_x, c->exit_y, c->exit_z,
+                                   c->entry_x, c->entry_y, c->entry_z);
+          else {
+            const int j = i + 1 == m ? 0 : i + 1;
+            tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, s->x[i], s->y[i], s->z[i], s->x[j],
+                                   s->y[j], s->z[j]);
+          }
+        }
         on &= ~tied;
         on &= clip_interval_id8(f0, f1, use & ~tied, i, &t0, &t1, &id0, &id1);
       }

@@ -145,9 +145,13 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
       float3 m = st->source_side[i];
       if (no_plane(m)) continue; /* repeated S' vertex: no side plane */
       float f0 = -pn_dot(m, a), f1 = -pn_dot(m, b);
-      /* In a boundary plane of S': same visible side → the source (lower index) keeps it;
-       * opposite → dropped. Either way this occluder edge is not counted. */
-      if (in_plane1(f0, f1, la, lb)) return;
+      /* In a boundary plane of S' whose edge lies in this edge's plane: same visible side → the
+       * source (lower index) keeps it; opposite → dropped. Either way this occluder edge is not
+       * counted. */
+      const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
+      if (in_plane1(f0, f1, la, lb) &&
+          edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z))
+        return;
       if (!clip_interval_id1(f0, f1, 1, i, &t0, &t1, &lo_id[0], &hi_id[0])) return;
     }
     lo[0] = t0;
@@ -163,7 +167,9 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
       float3 m = st->contour_side[e]; /* inside the occluder's cone: m·x > 0 */
       if (no_plane(m)) continue;      /* P on the edge's line */
       float f0 = pn_dot(m, a), f1 = pn_dot(m, b);
-      if (in_plane1(f0, f1, la, lb)) {
+      const float3 c = st->contour_a[e], d = st->contour_b[e];
+      if (in_plane1(f0, f1, la, lb) &&
+          edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z)) {
         if (keeps_tied_edge1(1, m_self.x, m_self.y, m_self.z, m.x, m.y, m.z, owner, v))
           covers = false;
         continue;

@@ -88,8 +88,8 @@ struct LdtSpec {
   double areaHeights[4] = {0, 0, 0, 0};
   double lorPercent = 100;
   double conversion = 1;
-  std::vector<LdtLampSet> lampSets = {LdtLampSet{}};
-  Intensity cdPerKlm;  // of (C, γ)
+  std::vector<LdtLampSet> lampSets = std::vector<LdtLampSet>(1);  // one lamp set of defaults
+  Intensity cdPerKlm;                                             // of (C, γ)
 };
 
 // The C planes stored for Isym (EULUMDAT: Isym 3 stores C90-C270).

@@ -35,13 +35,14 @@ TEST(ToneMap, BoundsHoldForEveryVertexAndEveryPixel) {
     const DisplaySpaces spaces = displaySpaces(scene.hdr, black);
     const RegionMap regions = findRegions(scene.faces);
     const VertexMesh mesh = buildVertexMesh(regions, 8);
-    const ConstraintSystem system = buildConstraintSystem(mesh, regions, spaces, {10, 1, 0.1});
+    const ConstraintSystem system =
+        buildConstraintSystem(mesh, regions, logScene(spaces, regions), ConstraintWeights{});
     const auto solved = solveBoundedLeastSquares(system.matrix, system.target, system.lower,
                                                  system.upper, system.start);
-    EXPECT_GT(solved.atLower + solved.atUpper, 0);  // the bounds are in play, not idle
-    for (Eigen::Index i = 0; i < solved.x.size(); ++i) {
-      ASSERT_GE(solved.x[i], black);
-      ASSERT_LE(solved.x[i], 1.0);
+    EXPECT_GT(solved.atLower + solved.atUpper, 0);        // the bounds are in play, not idle
+    for (Eigen::Index i = 0; i < solved.x.size(); ++i) {  // x = log V
+      ASSERT_GE(std::exp(solved.x[i]), black * (1 - 1e-12));
+      ASSERT_LE(solved.x[i], 0.0);
     }
     // Pixels, for every method, before and after rounding to 8 bits.
     for (DisplayMethod method :
@@ -63,35 +64,57 @@ TEST(ToneMap, BoundsHoldForEveryVertexAndEveryPixel) {
 }
 
 // Thesis Fig. 4.1 as a test: neighbours differ by 1.5-3, the whole spans 1:1e4, the display 1:20.
-TEST(ToneMap, StaircaseKeepsEveryEdgeRatioWhereLinearLosesThem) {
+// Each edge asks for its log ratio d compressed (d up to 0.5 kept, 0.5·(d/0.5)^0.5 above, at most
+// 1); together they ask for 7.9, the display holds log 20 = 3.0. The stripes are flat (their
+// rows hold them rigid), so the least-squares answer for this chain of equally weighted edges
+// takes the same share λ = (Σ targets − log 20) / 13 from every edge: each is shown at least
+// 1.05:1 and in order, the display's whole range is used; linear shows the dark end's edges at
+// ratios below 1.04.
+TEST(ToneMap, StaircaseShowsEveryEdgeCompressedByAnEqualShare) {
   std::vector<double> ratios = {2, 1.5, 3, 2.5, 1.8, 2.2, 1.6, 2.8, 2, 1.7, 2.4, 1.9, 1.6};
   const double others = std::accumulate(ratios.begin(), ratios.end() - 1, 1.0, std::multiplies<>());
   ratios.back() = 1e4 / others;  // the overall range exactly 1:1e4
   ASSERT_GE(ratios.back(), 1.5);
   ASSERT_LE(ratios.back(), 3.0);
-  const testing::HdrScene scene = testing::staircase(ratios, 48, 24, 0.5);
+  const int stripe = 48;
+  const testing::HdrScene scene = testing::staircase(ratios, stripe, 24, 0.5);
   const double black = 0.05;
   ToneMapStats stats;
   const ScalarImage constraint =
       displayValues(scene.hdr, scene.faces, optionsFor(DisplayMethod::Constraint, black), &stats);
   const ScalarImage linear =
       displayValues(scene.hdr, scene.faces, optionsFor(DisplayMethod::Linear, black));
-  const EdgeContrastShare kept =
-      measureEdgeContrast(scene.hdr, scene.faces, constraint, black, 0.05);
-  const EdgeContrastShare lost = measureEdgeContrast(scene.hdr, scene.faces, linear, black, 0.05);
-  std::cout << "staircase edges kept within 5 %: constraint " << kept.kept << "/" << kept.edges
-            << ", linear " << lost.kept << "/" << lost.edges << " (solve " << stats.outerIterations
-            << " steps, strong rms " << stats.strongRms << ")\n";
-  RecordProperty("constraint_share", std::to_string(kept.share()));
-  RecordProperty("linear_share", std::to_string(lost.share()));
   EXPECT_TRUE(stats.converged);
-  EXPECT_EQ(kept.edges, 13u * 24u);
-  EXPECT_EQ(kept.kept, kept.edges);  // every edge ratio within 5 %
-  EXPECT_LT(lost.share(), 0.5);      // linear loses most of them
+  std::vector<double> targets;
+  for (double r : ratios) {
+    const double d = std::log(r);
+    targets.push_back(std::min(d <= 0.5 ? d : 0.5 * std::sqrt(d / 0.5), 1.0));
+  }
+  const double share =
+      (std::accumulate(targets.begin(), targets.end(), 0.0) - std::log(1 / black)) / 13;
+  int linearLost = 0;
+  double bend = 0;
+  for (size_t i = 0; i < ratios.size(); ++i) {
+    const int left = static_cast<int>(stripe * i + stripe / 2), right = left + stripe;
+    for (int y = 0; y < 24; ++y) {
+      // Nearly flat: the edge rows bend a stripe's rows by 5.0 % at most (measured), at its ends.
+      for (int x = left - stripe / 2; x < left + stripe / 2; ++x) {
+        bend = std::max(bend, std::abs(double(constraint.at(x, y)) / constraint.at(left, y) - 1));
+      }
+      const double shown = std::log(constraint.at(right, y) / constraint.at(left, y));
+      ASSERT_NEAR(shown, targets[i] - share, 0.05) << "edge " << i << " row " << y;
+    }
+    if (linear.at(right, 12) / linear.at(left, 12) < 1.04) ++linearLost;
+  }
+  std::cout << "staircase: each edge's log ratio lowered by " << share << ", stripes bent by "
+            << bend << ", linear shows " << linearLost << " of 13 edges below 4 % (solve "
+            << stats.outerIterations << " steps)\n";
+  EXPECT_GE(linearLost, 4);  // the dark end: 1, 1.5, 3, 5 times 0.5 cd/m² all near black
+  EXPECT_LT(bend, 0.055) << "largest departure from a stripe's centre";
   // And it fits the display: both ends of the range in use.
   const auto [low, high] = std::minmax_element(constraint.values.begin(), constraint.values.end());
-  EXPECT_LE(*low, black * 1.5);
-  EXPECT_GE(*high, 0.9);
+  EXPECT_LE(*low, black * 1.05);
+  EXPECT_GE(*high, 0.95);
 }
 
 // A penumbra between two flat regions: a ramp 1 → 4 in Space 0 inside one face.
@@ -117,7 +140,10 @@ testing::HdrScene penumbraScene(double brightRight) {
   return scene;
 }
 
-TEST(ToneMap, PenumbraGradientKeepsItsRatio) {
+// Inside a region a log gradient g per pixel is shown as k (g/k)^0.7 with k = 0.03: the ramp's
+// g(s) = a / (1 + a s), a = 3/59, is below k over most of it, so it is shown steeper than it is,
+// by the closed form ∫₀⁵⁹ k^0.3 g^0.7 ds = k^0.3 a^−0.3 (4^0.3 − 1) / 0.3 = log 4.34.
+TEST(ToneMap, PenumbraGradientIsShownByItsClosedForm) {
   const testing::HdrScene scene = penumbraScene(10.0);
   const double black = 0.05;
   const ScalarImage constraint =
@@ -127,24 +153,27 @@ TEST(ToneMap, PenumbraGradientKeepsItsRatio) {
   for (int y = 0; y < 20; ++y) {
     for (int x = 31; x < 90; ++x) ASSERT_GE(constraint.at(x, y), constraint.at(x - 1, y));
   }
-  const double kept = constraint.at(89, 10) / constraint.at(30, 10);
+  const double k = 0.03, a = 3.0 / 59.0;
+  const double expected =
+      std::exp(std::pow(k, 0.3) * std::pow(a, -0.3) * (std::pow(4.0, 0.3) - 1) / 0.3);
+  const double shown = constraint.at(89, 10) / constraint.at(30, 10);
   const double linearRatio = linear.at(89, 10) / linear.at(30, 10);
-  std::cout << "penumbra ramp 1:4 shown as constraint 1:" << kept << ", linear 1:" << linearRatio
-            << "\n";
-  EXPECT_NEAR(kept, 4.0, 4.0 * 0.05);
+  std::cout << "penumbra ramp 1:4 shown as constraint 1:" << shown << " (closed form 1:" << expected
+            << "), linear 1:" << linearRatio << "\n";
+  EXPECT_NEAR(shown, expected, expected * 0.02);
   EXPECT_GT(std::abs(linearRatio - 4.0), 4.0 * 0.05);  // the baseline distorts it (MinRGB shift)
 }
 
 // A hard shadow inside one face (ratio 3 over one pixel, between two lattice columns), with a
-// window 3e4 brighter in view, so that Space 3 is nearly flat over the whole face. When the solve
-// gives every vertex of the face the same gain (V = k·V0), every pixel must show k·V0: the
-// shadow's edge where no vertex lies included. A gain on V3 would show it at a ratio near 1.
+// window 3e3 brighter in view, so that the linear Space 3 would be nearly flat over the whole
+// face. When the solve gives every vertex of the face the same gain (log V = log k + log V0),
+// every pixel must show k·V0: the shadow's edge where no vertex lies included.
 TEST(ToneMap, UniformGainReproducesSpaceZeroBetweenVertices) {
   testing::HdrScene scene{RgbImage(64, 16), FaceIdImage(64, 16)};
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 64; ++x) {
       const bool window = x >= 56;
-      const double v = window ? 3e4 : (x < 29 ? 1.0 : 3.0) * (1 + 0.01 * y);
+      const double v = window ? 3e3 : (x < 29 ? 1.0 : 3.0) * (1 + 0.01 * y);
       float* p = scene.hdr.pixel(x, y);
       p[0] = p[1] = p[2] = static_cast<float>(v);
       scene.faces.at(x, y) = window ? 2 : 1;
@@ -157,9 +186,11 @@ TEST(ToneMap, UniformGainReproducesSpaceZeroBetweenVertices) {
   Eigen::VectorXd values(mesh.vertices.size());
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
     const MeshVertex& v = mesh.vertices[i];
-    values[i] = v.region == regions.at(0, 0) ? gain * spaces.value0[spaces.index(v.x, v.y)] : 1.0;
+    values[i] =
+        v.region == regions.at(0, 0) ? std::log(gain * spaces.value0[spaces.index(v.x, v.y)]) : 0.0;
   }
-  const ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, values);
+  const ScalarImage display =
+      interpolateDisplayValues(mesh, regions, spaces, logScene(spaces, regions), values);
   for (int y = 0; y < 16; ++y) {
     for (int x = 0; x < 56; ++x) {
       ASSERT_NEAR(display.at(x, y), gain * scene.hdr.pixel(x, y)[0], 1e-6) << x << "," << y;
@@ -167,35 +198,23 @@ TEST(ToneMap, UniformGainReproducesSpaceZeroBetweenVertices) {
   }
 }
 
-// The medium and strong rows are the Space-0 ratios: any multiple of Space 0 satisfies them all.
-TEST(ToneMap, ScaledSpaceZeroSatisfiesStrongAndMediumRows) {
+// Every row asks for a difference of log V₀ or for the exposure curve at the log-average
+// exposure, so the map sees ratios only: the same scene in other units (×1000) or in a brighter
+// light (×7) shows the same picture.
+TEST(ToneMap, TheMapDependsOnRatiosOnly) {
   const testing::HdrScene scene = testing::roomView(64, 40, 3);
-  // Keep every ratio inside the display's range so that no row is capped.
-  RgbImage mild = scene.hdr;
-  for (float& v : mild.rgb) v = std::pow(v + 1.0f, 0.2f);
-  const DisplaySpaces spaces = displaySpaces(mild, 0.02);
-  const RegionMap regions = findRegions(scene.faces);
-  const VertexMesh mesh = buildVertexMesh(regions, 6);
-  const ConstraintSystem system = buildConstraintSystem(mesh, regions, spaces, {10, 1, 0.1});
-  ASSERT_GT(system.threeVariableRows, 0);
-  Eigen::VectorXd scaled(mesh.vertices.size());
-  for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-    scaled[i] = 0.01 * spaces.value0[spaces.index(mesh.vertices[i].x, mesh.vertices[i].y)];
-  }
-  const Eigen::VectorXd residual = system.matrix * scaled - system.target;
-  int strong = 0, medium = 0;
-  for (Eigen::Index r = 0; r < residual.size(); ++r) {
-    if (system.level[r] == ConstraintLevel::Weak) continue;
-    (system.level[r] == ConstraintLevel::Strong ? strong : medium)++;
-    if (system.level[r] == ConstraintLevel::Strong && system.matrix.row(r).nonZeros() == 3) {
-      // A three-variable row interpolates V0 along the other side: exact only on a linear V0,
-      // so compare to the spread of V0 between its two vertices.
-      continue;
+  const ScalarImage reference =
+      displayValues(scene.hdr, scene.faces, optionsFor(DisplayMethod::Constraint, 0.02));
+  for (float scale : {7.0f, 1000.0f}) {
+    RgbImage scaled = scene.hdr;
+    for (float& v : scaled.rgb) v *= scale;
+    const ScalarImage display =
+        displayValues(scaled, scene.faces, optionsFor(DisplayMethod::Constraint, 0.02));
+    for (size_t i = 0; i < display.values.size(); ++i) {
+      ASSERT_NEAR(display.values[i], reference.values[i], 1e-4 * reference.values[i])
+          << "scale " << scale << " pixel " << i;
     }
-    EXPECT_NEAR(residual[r], 0.0, 1e-9 * system.weight[r]) << "row " << r;
   }
-  EXPECT_GT(strong, 0);
-  EXPECT_GT(medium, 0);
 }
 
 // Two flat faces side by side, with vertex values far apart: every pixel of each face shows its
@@ -208,9 +227,10 @@ TEST(ToneMap, PixelsNeverTakeAGainFromAcrossAnEdge) {
   Eigen::VectorXd values(mesh.vertices.size());
   const double left = 0.3, right = 0.9;
   for (size_t i = 0; i < mesh.vertices.size(); ++i) {
-    values[i] = mesh.vertices[i].region == regions.at(0, 0) ? left : right;
+    values[i] = std::log(mesh.vertices[i].region == regions.at(0, 0) ? left : right);
   }
-  const ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, values);
+  const ScalarImage display =
+      interpolateDisplayValues(mesh, regions, spaces, logScene(spaces, regions), values);
   for (int y = 0; y < 17; ++y) {
     for (int x = 0; x < 42; ++x) {
       ASSERT_NEAR(display.at(x, y), x < 21 ? left : right, 1e-6) << x << "," << y;

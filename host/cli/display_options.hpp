@@ -63,15 +63,19 @@ inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
                   "The display's black as a fraction of its white (LowerBound)")
       ->capture_default_str()
       ->check(CLI::Range(1e-4, 0.5));
-  command.add_option("--strong", options.strong, "Weight of the edge-ratio rows (constraint only)")
+  command
+      .add_option("--strong", options.strong,
+                  "Weight of the edge rows: compressed log ratio (constraint only)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   command
       .add_option("--medium", options.medium,
-                  "Weight of the rows inside a region (keep neighbours' ratio)")
+                  "Weight of the rows inside a region (attenuated log gradient)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
-  command.add_option("--weak", options.weak, "Weight of the rows that pull V to the linear map")
+  command
+      .add_option("--weak", options.weak,
+                  "Weight of the rows that pull V to the exposure curve (Space 3)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   command

@@ -19,7 +19,7 @@ void printStats(const ToneMapStats& s) {
     fmt::print(stderr,
                "  {} variables, rows: {} strong ({} with three variables), {} medium, {} weak\n"
                "  {} outer iterations{}, {} at black, {} at white\n"
-               "  residual rms/max (V): strong {:.3g}/{:.3g}, medium {:.3g}/{:.3g}, weak "
+               "  residual rms/max (log V): strong {:.3g}/{:.3g}, medium {:.3g}/{:.3g}, weak "
                "{:.3g}/{:.3g}\n"
                "  seconds: build {:.3f}, solve {:.3f}, pixels {:.3f}\n",
                s.variables, s.strongRows, s.threeVariableRows, s.mediumRows, s.weakRows,

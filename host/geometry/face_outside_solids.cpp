@@ -11,14 +11,20 @@ BoundingBox boxOf(const std::vector<Vec3>& points) {
   return box;
 }
 
+// Pieces no wider than this many tolerances are left out (hasArea).
+constexpr double kStripWidths = 4.0;
+
 bool hasArea(const ConvexPolygon& polygon, double tolerance) {
   if (polygon.empty()) return false;
   double longest = 0.0;
   const auto& v = polygon.vertices();
   for (std::size_t i = 0; i < v.size(); ++i)
     longest = std::max(longest, (v[(i + 1) % v.size()] - v[i]).norm());
-  // Thinner than the tolerance everywhere: area / longest edge bounds the width.
-  return polygon.area() > tolerance * longest;
+  // area / longest edge bounds the width. The pieces are cut along each solid's planes grown by
+  // the tolerance, so where two solids meet (a wall's slabs beside a window) the cuts along
+  // their common plane lie twice the tolerance apart, and the strip between them is dropped: its
+  // area is nothing, and as an element its two long edges coincide in the kernel's float.
+  return polygon.area() > kStripWidths * tolerance * longest;
 }
 
 }  // namespace

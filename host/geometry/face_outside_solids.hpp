@@ -10,7 +10,8 @@ namespace penumbra {
 // `face` minus every solid in `others` (their closed insides, within `tolerance`), split into
 // convex polygons: against each solid, the piece outside its first plane, then the piece inside
 // that one and outside the second, and so on; what is inside every plane is dropped. Pieces
-// thinner than `tolerance` are dropped.
+// no wider than 4 × `tolerance` are dropped: where two solids meet, the cuts along their
+// common plane (each grown by `tolerance`) leave a strip twice the tolerance wide.
 std::vector<ConvexPolygon> faceOutsideSolids(const ConvexPolygon& face,
                                              const std::vector<const ConvexPolyhedron*>& others,
                                              double tolerance);

@@ -71,7 +71,8 @@ struct Problem {
   }
 };
 
-// x in V units (display values in [LowerBound, 1]): far below what 8 bits can show.
+// x in log V for the tone map (1e-10 is a relative change of display V of 1e-10): far below
+// what 8 bits can show.
 constexpr double kStationarity = 1e-10;
 
 // Stage 1. Returns true when x, put on its bounds, satisfies the KKT conditions; false on a

@@ -26,7 +26,7 @@ struct BoundedLeastSquaresResult {
   int activeSetIterations = 0;        // stage 1
   int projectedNewtonIterations = 0;  // stage 2 (0 when stage 1 converged)
   // The KKT conditions hold: a diagonally scaled projected-gradient step moves x by at most
-  // 1e-10 (V units).
+  // 1e-10 (in the unknowns' units: log V for the tone map).
   bool converged = false;
   int atLower = 0, atUpper = 0;
   int outerIterations() const { return activeSetIterations + projectedNewtonIterations; }

@@ -26,10 +26,9 @@ struct RowBuilder {
   }
 };
 
-// Space-0 V at a pixel, kept away from 0 so that a ratio exists (the cap then bounds it).
-double space0(const DisplaySpaces& spaces, int x, int y) {
-  const double floor = std::max(spaces.maxRgb, 1.0) * 1e-12;
-  return std::max<double>(spaces.value0[spaces.index(x, y)], floor);
+// log Space-0 V at a pixel.
+double logAt(const LogScene& scene, const RegionMap& regions, int x, int y) {
+  return scene.logValue[regions.index(x, y)];
 }
 
 // A vertex of region `other` that lies on its edge with region `own`.
@@ -45,23 +44,18 @@ bool facesRegion(const RegionMap& regions, const MeshVertex& v, int32_t own) {
 // region B. If q is a vertex: eq. 4.21. Otherwise q lies between two vertices k, l of B's side of
 // the same edge, at β = |kq| / |kl|: eq. 4.22 when p is the brighter side, eq. 4.24 when q is.
 void addEdgeRow(RowBuilder& rows, int& threeVariableRows, const VertexMesh& mesh,
-                const RegionMap& regions, const DisplaySpaces& spaces, double weight, int j, int qx,
+                const RegionMap& regions, const LogScene& scene, double weight, int j, int qx,
                 int qy) {
   const MeshVertex& p = mesh.vertices[j];
-  const double v0p = space0(spaces, p.x, p.y), v0q = space0(spaces, qx, qy);
-  const double lb = spaces.lowerBound;
+  const double lp = logAt(scene, regions, p.x, p.y), lq = logAt(scene, regions, qx, qy);
   const int32_t regionB = regions.at(qx, qy);
   const int32_t direct = mesh.vertexAt[regions.index(qx, qy)];
-  const auto twoVariable = [&](int k, double v0k) {
-    if (v0p >= v0k) {
-      rows.add(ConstraintLevel::Strong, weight, {{j, 1.0}, {k, -requestedRatio(v0p, v0k, lb)}}, 0);
-    } else {
-      rows.add(ConstraintLevel::Strong, weight, {{k, 1.0}, {j, -requestedRatio(v0k, v0p, lb)}}, 0);
-    }
+  const auto twoVariable = [&](int k, double lk) {
+    rows.add(ConstraintLevel::Strong, weight, {{j, 1.0}, {k, -1.0}}, scene.edgeTarget(lp - lk));
   };
   if (direct != VertexMesh::kNone) {
     // Both sides are vertices: the row is the same seen from either, so it is made once.
-    if (regions.index(p.x, p.y) < regions.index(qx, qy)) twoVariable(direct, v0q);
+    if (regions.index(p.x, p.y) < regions.index(qx, qy)) twoVariable(direct, lq);
     return;
   }
   // B's vertices on this edge near q. Vertices lie at most `lattice` apart along a straight edge,
@@ -105,19 +99,14 @@ void addEdgeRow(RowBuilder& rows, int& threeVariableRows, const VertexMesh& mesh
       const double d = std::hypot(mesh.vertices[v].x - qx, mesh.vertices[v].y - qy);
       if (d < nearestDistance) nearestDistance = d, nearest = v;
     }
-    twoVariable(nearest, space0(spaces, mesh.vertices[nearest].x, mesh.vertices[nearest].y));
+    twoVariable(nearest, logAt(scene, regions, mesh.vertices[nearest].x, mesh.vertices[nearest].y));
     return;
   }
   ++threeVariableRows;
+  // Eq. 4.22/4.24 in the log domain: q's value is interpolated between k and l.
   const double beta = bestBeta;
-  if (v0p >= v0q) {
-    const double c = requestedRatio(v0p, v0q, lb);  // eq. 4.22
-    rows.add(ConstraintLevel::Strong, weight,
-             {{j, 1.0}, {bestK, -c * (1 - beta)}, {bestL, -c * beta}}, 0);
-  } else {
-    const double c = requestedRatio(v0q, v0p, lb);  // eq. 4.24
-    rows.add(ConstraintLevel::Strong, weight, {{j, -c}, {bestK, 1 - beta}, {bestL, beta}}, 0);
-  }
+  rows.add(ConstraintLevel::Strong, weight, {{j, 1.0}, {bestK, -(1 - beta)}, {bestL, -beta}},
+           scene.edgeTarget(lp - lq));
 }
 
 // Every pixel on the segment from a to b lies in the region: the two vertices see each other
@@ -162,15 +151,9 @@ void addRegionNeighbours(std::vector<std::pair<int, int>>& pairs, const VertexMe
 
 }  // namespace
 
-double requestedRatio(double brighter, double darker, double lowerBound) {
-  return std::min(brighter / darker, 1.0 / lowerBound);
-}
-
 ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& regions,
-                                       const DisplaySpaces& spaces,
-                                       const ConstraintWeights& weights) {
+                                       const LogScene& scene, const ConstraintWeights& weights) {
   const int n = static_cast<int>(mesh.vertices.size());
-  const double lb = spaces.lowerBound;
   RowBuilder rows;
   ConstraintSystem system;
 
@@ -184,11 +167,11 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
       if (qx < 0 || qy < 0 || qx >= regions.width || qy >= regions.height) continue;
       const int32_t other = regions.at(qx, qy);
       if (other == p.region || other == RegionMap::kNone) continue;
-      addEdgeRow(rows, system.threeVariableRows, mesh, regions, spaces, weights.strong, j, qx, qy);
+      addEdgeRow(rows, system.threeVariableRows, mesh, regions, scene, weights.strong, j, qx, qy);
     }
   }
 
-  // Medium: neighbouring vertices of one region keep their Space-0 ratio.
+  // Medium: neighbouring vertices of one region, their attenuated Space-0 log ratio.
   std::vector<std::pair<int, int>> pairs;
   for (int i = 0; i < n; ++i) addRegionNeighbours(pairs, mesh, regions, i);
   std::sort(pairs.begin(), pairs.end());
@@ -196,21 +179,19 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
   for (const auto& [a, b] : pairs) {
     const MeshVertex& va = mesh.vertices[a];
     const MeshVertex& vb = mesh.vertices[b];
-    const double v0a = space0(spaces, va.x, va.y), v0b = space0(spaces, vb.x, vb.y);
-    if (v0a >= v0b) {
-      rows.add(ConstraintLevel::Medium, weights.medium,
-               {{a, 1.0}, {b, -requestedRatio(v0a, v0b, lb)}}, 0);
-    } else {
-      rows.add(ConstraintLevel::Medium, weights.medium,
-               {{b, 1.0}, {a, -requestedRatio(v0b, v0a, lb)}}, 0);
-    }
+    rows.add(
+        ConstraintLevel::Medium, weights.medium, {{a, 1.0}, {b, -1.0}},
+        scene.insideTarget(logAt(scene, regions, va.x, va.y) - logAt(scene, regions, vb.x, vb.y),
+                           std::hypot(va.x - vb.x, va.y - vb.y), regions.index(va.x, va.y),
+                           regions.index(vb.x, vb.y)));
   }
 
-  // Weak: every vertex near its Space-3 value. Also the start of the solve (thesis 5.4).
+  // Weak: every vertex near its Space-3 value, the exposure curve. Also the start of the solve
+  // (thesis 5.4).
   system.start.resize(n);
   for (int i = 0; i < n; ++i) {
     const MeshVertex& v = mesh.vertices[i];
-    system.start[i] = spaces.value3[spaces.index(v.x, v.y)];
+    system.start[i] = scene.exposedValue(regions.index(v.x, v.y));
     rows.add(ConstraintLevel::Weak, weights.weak, {{i, 1.0}}, system.start[i]);
   }
 
@@ -218,8 +199,8 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
   system.matrix.resize(m, n);
   system.matrix.setFromTriplets(rows.entries.begin(), rows.entries.end());
   system.target = Eigen::Map<const Eigen::VectorXd>(rows.target.data(), m);
-  system.lower = Eigen::VectorXd::Constant(n, lb);
-  system.upper = Eigen::VectorXd::Constant(n, 1.0);
+  system.lower = Eigen::VectorXd::Constant(n, scene.logLowerBound);
+  system.upper = Eigen::VectorXd::Constant(n, 0.0);
   system.level = std::move(rows.level);
   system.weight = std::move(rows.weight);
   return system;

@@ -1,16 +1,19 @@
 #pragma once
-// The constraint hierarchy as one weighted bounded least-squares problem (thesis eq. 5.8):
-//   minimise ||A V - b||²  subject to  LowerBound <= V <= 1   (required, eq. 4.17)
-// where each row of A is one constraint multiplied by its level's weight:
-//   strong  across every visible edge, the Space-0 ratio (eq. 4.21, 4.22, 4.24)
-//   medium  between neighbouring vertices of one region, their Space-0 ratio (eq. 4.34 when the
-//           region is flat, where the ratio is 1)
-//   weak    every vertex at its Space-3 value (eq. 4.35)
+// The constraint hierarchy as one weighted bounded least-squares problem (thesis eq. 5.8) on
+// x = log V per vertex:
+//   minimise ||A x - b||²  subject to  log LowerBound <= x <= 0   (required, eq. 4.17)
+// where each row of A is one constraint multiplied by its level's weight (log_scene.hpp gives
+// the targets):
+//   strong  across every visible edge, the compressed Space-0 log ratio (eq. 4.21, 4.22, 4.24 in
+//           logs)
+//   medium  between neighbouring vertices of one region, their attenuated Space-0 log ratio (0
+//           on a flat region, eq. 4.34)
+//   weak    every vertex at the log of its Space-3 value, the exposure curve (eq. 4.35)
 #include <Eigen/Sparse>
 #include <cstdint>
 #include <vector>
 
-#include "tonemap/display_spaces.hpp"
+#include "tonemap/log_scene.hpp"
 #include "tonemap/region_map.hpp"
 #include "tonemap/vertex_mesh.hpp"
 
@@ -19,7 +22,7 @@ namespace penumbra {
 enum class ConstraintLevel : uint8_t { Strong, Medium, Weak };
 
 struct ConstraintWeights {
-  double strong = 10, medium = 1, weak = 0.1;
+  double strong = 10, medium = 100, weak = 0.1;
 };
 
 struct ConstraintSystem {
@@ -32,15 +35,7 @@ struct ConstraintSystem {
   int threeVariableRows = 0;
 };
 
-// The largest ratio a row asks for is 1 / LowerBound, the most the display can show. A ratio
-// beyond it (a window beside a wall, a lit desk beside an umbra where E = 0) could not be met
-// anyway, and squared it would put 1e8 and more into the normal matrix beside weights near 1,
-// which no double-precision factorisation resolves. With the cap such a row asks for the display's
-// full range across the edge, which is what it can give.
-double requestedRatio(double brighter, double darker, double lowerBound);
-
 ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& regions,
-                                       const DisplaySpaces& spaces,
-                                       const ConstraintWeights& weights);
+                                       const LogScene& scene, const ConstraintWeights& weights);
 
 }  // namespace penumbra

@@ -40,7 +40,7 @@ void checkInputs(const RgbImage& hdr, const FaceIdImage& faces, const ToneMapOpt
   }
 }
 
-// Root mean square and largest |residual| per level, in V units (each row divided by its weight).
+// Root mean square and largest |residual| per level, in log V (each row divided by its weight).
 void reportResiduals(const ConstraintSystem& system, const Eigen::VectorXd& values,
                      ToneMapStats& stats) {
   const Eigen::VectorXd residual = system.matrix * values - system.target;
@@ -66,8 +66,9 @@ ScalarImage constraintDisplayValues(const DisplaySpaces& spaces, const RegionMap
                                     const ToneMapOptions& options, ToneMapStats& stats) {
   auto start = Clock::now();
   const VertexMesh mesh = buildVertexMesh(regions, options.lattice);
+  const LogScene scene = logScene(spaces, regions);
   const ConstraintSystem system = buildConstraintSystem(
-      mesh, regions, spaces, ConstraintWeights{options.strong, options.medium, options.weak});
+      mesh, regions, scene, ConstraintWeights{options.strong, options.medium, options.weak});
   stats.variables = static_cast<int>(mesh.vertices.size());
   stats.threeVariableRows = system.threeVariableRows;
   stats.buildSeconds = secondsSince(start);
@@ -85,7 +86,7 @@ ScalarImage constraintDisplayValues(const DisplaySpaces& spaces, const RegionMap
   reportResiduals(system, solved.x, stats);
 
   start = Clock::now();
-  ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, solved.x);
+  ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, scene, solved.x);
   stats.pixelSeconds = secondsSince(start);
   return display;
 }

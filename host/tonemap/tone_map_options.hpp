@@ -20,12 +20,13 @@ struct ToneMapOptions {
   // LowerBound (eq. 4.17): the display's black as a fraction of its white. 0.02 is a screen in a
   // dim room; the thesis measured 5-15 % with ambient light.
   double black = 0.02;
-  // Weights of the constraint hierarchy (eq. 4.21-4.35, one weighted row each). The thesis leaves
-  // them open; these keep edge ratios (strong) over smoothness inside a region (medium) over the
-  // linear Space-3 value (weak), each level about two orders of magnitude in the squared
-  // residual, which is what the staircase test in tests/tonemap_test.cpp needs.
+  // Weights of the constraint hierarchy (one weighted row each, on log V; docs/tonemap.md). The
+  // thesis leaves them open. The region rows (medium) outweigh the edge rows (strong) tenfold so
+  // that an edge cannot bend the region beside it (a halo: tests/tonemap_halo_test.cpp measures
+  // 0.79 with medium 1 and below 1e-3 with 100); the weak rows only set the level of what the
+  // others leave free (the office's S moves by under 1e-3 from weak 0.01 to 0.1).
   double strong = 10.0;
-  double medium = 1.0;
+  double medium = 100.0;
   double weak = 0.1;
   // Largest spacing in pixels between the vertices of a region (interior lattice and boundary).
   int lattice = 8;
@@ -60,7 +61,7 @@ struct ToneMapStats {
   int activeSetIterations = 0, projectedNewtonIterations = 0;
   bool converged = true;
   int atLowerBound = 0, atUpperBound = 0;
-  // Root mean square and largest |residual| of each level's rows, unweighted (in V units).
+  // Root mean square and largest |residual| of each level's rows, unweighted (in log V units).
   double strongRms = 0, strongMax = 0;
   double mediumRms = 0, mediumMax = 0;
   double weakRms = 0, weakMax = 0;

@@ -22,14 +22,11 @@ struct PixelSums {
 }  // namespace
 
 ScalarImage interpolateDisplayValues(const VertexMesh& mesh, const RegionMap& regions,
-                                     const DisplaySpaces& spaces, const Eigen::VectorXd& values) {
+                                     const DisplaySpaces& spaces, const LogScene& scene,
+                                     const Eigen::VectorXd& values) {
   const int width = regions.width, height = regions.height, spacing = mesh.lattice;
   const size_t count = regions.region.size();
-  // Keeps the gain finite where V₀ = 0 (an umbra in a direct-light render).
-  const double epsilon = std::max(spaces.maxRgb, 1e-30) * 1e-9;
-  std::vector<float> logV0(count);
-  for (size_t i = 0; i < count; ++i)
-    logV0[i] = static_cast<float>(std::log(spaces.value0[i] + epsilon));
+  const std::vector<float>& logV0 = scene.logValue;
   std::vector<double> regionValue(regions.count, 0.0), regionVertices(regions.count, 0.0);
   std::vector<PixelSums> sums(count);
   // Splat each vertex over its tent, onto pixels of its own region only: the work is
@@ -37,7 +34,7 @@ ScalarImage interpolateDisplayValues(const VertexMesh& mesh, const RegionMap& re
   for (size_t v = 0; v < mesh.vertices.size(); ++v) {
     const MeshVertex& vertex = mesh.vertices[v];
     const size_t at = regions.index(vertex.x, vertex.y);
-    const float gain = static_cast<float>(values[v] / (spaces.value0[at] + epsilon));
+    const float gain = static_cast<float>(values[v] - logV0[at]);
     regionValue[vertex.region] += values[v];
     regionVertices[vertex.region] += 1;
     for (int y = std::max(0, vertex.y - spacing + 1);
@@ -63,17 +60,17 @@ ScalarImage interpolateDisplayValues(const VertexMesh& mesh, const RegionMap& re
     const int32_t r = regions.region[i];
     double value;
     if (r == RegionMap::kNone) {
-      value = spaces.value3[i];
+      value = scene.exposedValue(i);
     } else if (mesh.vertexAt[i] != VertexMesh::kNone) {
       value = values[mesh.vertexAt[i]];
     } else if (sums[i].weight > 0) {
-      value = (spaces.value0[i] + epsilon) * sums[i].weightedGain / sums[i].weight;
+      value = logV0[i] + sums[i].weightedGain / sums[i].weight;
     } else if (std::isfinite(sums[i].closest)) {
-      value = (spaces.value0[i] + epsilon) * sums[i].closestGain;
+      value = logV0[i] + sums[i].closestGain;
     } else {
       value = regionValue[r] / regionVertices[r];
     }
-    display.values[i] = boundedDisplayValue(value, spaces.lowerBound);
+    display.values[i] = boundedDisplayValue(std::exp(value), spaces.lowerBound);
   }
   return display;
 }
