@@ -49,7 +49,7 @@ inline void aperture_corner8(ApertureView8 v, PnAperture ap, float4 n, int i, fl
 inline float8 unoccluded_aperture8(ApertureView8 v, PnAperture ap, float4 plane, float8 nx,
                                    float8 ny, float8 nz, const PnEmission* em) {
   HorizonSum8 h;
-  horizon_begin8(&h, em);
+  horizon_begin8(&h, 0, nx, ny, nz, em);
   float8 ax, ay, az;
   aperture_corner8(v, ap, plane, 0, &ax, &ay, &az);
   float8 ha = nx * ax + ny * ay + nz * az;

@@ -53,14 +53,6 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * turns a scalar 1 into -2), and select() reads both kinds. The scalar path's float3 forms
  * follow the definitions. */
 
-/* x·y − z·w to about one rounding of the result (Kahan's algorithm with fma), where the plain
- * products would leave the rounding of the larger of them. */
-#define PN_DEFINE_DIFF_OF_PRODUCTS(T, S)             \
-  inline T diff_of_products##S(T x, T y, T z, T w) { \
-    T zw = z * w;                                    \
-    return fma(x, y, -zw) + fma(-z, w, zw);          \
-  }
-
 /* The unit normal of the side plane through P and the segment (a, b), along cross(a, b); zero
  * where the plane is undefined: the segment is a point or its line passes through P. The cross
  * product is taken as cross(a, b − a), whose products are |a|·|b − a| rather than |a|·|b|. Side
@@ -188,13 +180,12 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
       cz = diff_of_products##S(ax, by, ay, bx);                                                \
     T s = sqrt(cx * cx + cy * cy + cz * cz);                                                   \
     T term = em->order >= 0                                                                    \
-                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, em)    \
+                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, 0, em) \
                  : -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s; \
     return select(term, (T)(0.0f), s <= 0.0f);                                                 \
   }
 
 #define PN_DEFINE_CONTOUR_TWINS(T, M, S) \
-  PN_DEFINE_DIFF_OF_PRODUCTS(T, S)       \
   PN_DEFINE_SIDE_NORMAL(T, M, S)         \
   PN_DEFINE_EDGE_POINT(T, S)             \
   PN_DEFINE_IN_PLANE(T, M, S)            \
@@ -206,7 +197,6 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
 PN_DEFINE_CONTOUR_TWINS(float, int, 1)   /* one body for the scalar path */
 PN_DEFINE_CONTOUR_TWINS(float8, int8, 8) /* and for eight lanes */
 #undef PN_DEFINE_CONTOUR_TWINS
-#undef PN_DEFINE_DIFF_OF_PRODUCTS
 #undef PN_DEFINE_SIDE_NORMAL
 #undef PN_DEFINE_EDGE_POINT
 #undef PN_DEFINE_IN_PLANE

@@ -97,13 +97,25 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
   return em;
 }
 
+/* An arc's parts that a caller takes relative to its contour's reference point (arc_term.cl,
+ * for a small, distant face): `lambert` its Lambert term, `dpsi` the azimuth form's Δψ and `drop`
+ * what the direct form gives up for it (each less a part that telescopes around the contour). A
+ * null pointer: every part from the arc alone. */
+typedef struct {
+  float lambert, dpsi, drop;
+} PnArcShares1;
+typedef struct {
+  float8 lambert, dpsi, drop;
+} PnArcShares8;
+
 /* The azimuth form of one arc's term (above) where it is the more accurate, else `direct`, the
  * term by the recurrences of F_k and τ_k. x, y, r2, f_end = f(Θ), slope_end = f′(Θ), delta =
- * f(Θ) − x and delta_slope = f′(Θ) − y as moment_term computes them; c = b × a. */
+ * f(Θ) − x and delta_slope = f′(Θ) − y as moment_term computes them; c = b × a; shares (or null)
+ * as moment_term's. */
 #define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                  \
   inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,             \
                            T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,          \
-                           T cx, T cy, T cz, const PnEmission* em) {                                     \
+                           T cx, T cy, T cz, const PnArcShares##S* shares, const PnEmission* em) {       \
     const float wx = em->wx, wy = em->wy, wz = em->wz;                                                   \
     const int order = em->order;                                                                         \
     const float far_even = em->tail[order - (order & 1)],                                                \
@@ -126,7 +138,8 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
     /* Δψ, the azimuth from a to b about w: the angle from w × a to w × b, signed by w·(b × a). */ \
     T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                         \
     T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                         \
-    T dpsi = atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);                      \
+    T dpsi = shares ? shares->dpsi                                                                       \
+                    : atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);             \
     T wnm = wn * wm;                                                                                     \
     /* Forward: F_j for j = 1..last_ahead, as moment_term. */                                            \
     T ahead = 0.0f;                                                                                      \
@@ -174,8 +187,8 @@ inline PnEmission emission_of(PnSourceFace face, const PnSceneTables* tables) {
       /* behind holds j − 2 = 1..last_behind − 2; the two highest powers, whose F start at 0, are    \
        * the cut-off's. */                                                                               \
     }                                                                                                    \
-    T azimuth =                                                                                          \
-        em->c[0] * theta * nm + 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));           \
+    T rest = 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));                              \
+    T azimuth = shares ? em->c[0] * shares->lambert + rest : em->c[0] * theta * nm + rest;               \
     return select(direct, azimuth, backward | forward);                                                  \
   }
 PN_DEFINE_AZIMUTH_FORM(float, int, 1)
@@ -183,49 +196,53 @@ PN_DEFINE_AZIMUTH_FORM(float8, int8, 8)
 #undef PN_DEFINE_AZIMUTH_FORM
 
 /* 2 Σ_k c_k M_k over the arc a → b (vectors from P, any length), c = b × a computed to about a
- * rounding of itself by the caller, s = |c| > 0 (lanes with s <= 0 are the caller's to zero). One
- * body for one point (T float, names ending in 1) and eight lanes (float8, 8). */
-#define PN_DEFINE_MOMENT_TERM(T, S, Sum, add)                                                    \
-  inline T moment_term##S(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T s, T nx, T ny, \
-                          T nz, const PnEmission* em) {                                          \
-    const float wx = em->wx, wy = em->wy, wz = em->wz;                                           \
-    T la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);            \
-    T ab = ax * bx + ay * by + az * bz;                                                          \
-    T theta = atan2(s, ab);                                                                      \
-    T inverse = 1.0f / (la * lb);                                                                \
-    T sin_t = s * inverse, cos_t = ab * inverse;                                                 \
-    T versine = select(1.0f - cos_t, sin_t * sin_t / (1.0f + cos_t), cos_t >= 0.0f);             \
-    T mx = cx / s, my = cy / s, mz = cz / s;                                                     \
-    T ux = ax / la, uy = ay / la, uz = az / la;                                                  \
-    T tx = uy * mz - uz * my, ty = uz * mx - ux * mz, tz = ux * my - uy * mx;                    \
-    T x = wx * ux + wy * uy + wz * uz, y = wx * tx + wy * ty + wz * tz;                          \
-    T nm = nx * mx + ny * my + nz * mz, wm = wx * mx + wy * my + wz * mz;                        \
-    T wn = wx * nx + wy * ny + wz * nz;                                                          \
-    T f_end = x * cos_t + y * sin_t, slope_end = y * cos_t - x * sin_t;                          \
-    T delta = y * sin_t - x * versine, delta_slope = -x * sin_t - y * versine;                   \
-    T r2 = x * x + y * y;                                                                        \
-    T wb = (wx * bx + wy * by + wz * bz) / lb;                                                   \
-    T omega = 2.0f * atan2((wx * cx + wy * cy + wz * cz) * inverse, 1.0f + x + cos_t + wb);      \
-    Sum sum = {em->c[0] * theta * nm, 0.0f}; /* its parts may cancel: compensated */             \
-    T f_prev = theta, f_prev2 = 0.0f;        /* F_{k−1}, F_{k−2} */                          \
-    T tau_prev = 0.0f, tau_prev2 = 0.0f;     /* τ_{k−2}, τ_{k−3} */                        \
-    T d = 0.0f, xp = 1.0f;                   /* D_{k−1}, x^{k−1} */                          \
-    for (int k = 1; k <= em->order; ++k) {                                                       \
-      const float kf = (float)k;                                                                 \
-      T bracket = d * slope_end + xp * delta_slope;                                              \
-      T f_k = ((kf - 1.0f) * r2 * f_prev2 - bracket) / kf;                                       \
-      T tau = k == 1 ? omega : ((kf - 2.0f) * tau_prev2 + wm * f_prev2) / kf; /* τ_{k−1} */   \
-      add(&sum, em->c[k] * (2.0f * (kf * wn * tau + nm * f_k) / (kf + 2.0f)));                   \
-      d = f_end * d + xp * delta;                                                                \
-      xp *= x;                                                                                   \
-      f_prev2 = f_prev;                                                                          \
-      f_prev = f_k;                                                                              \
-      tau_prev2 = tau_prev;                                                                      \
-      tau_prev = tau;                                                                            \
-    }                                                                                            \
-    if (em->order <= PN_MOMENT_DIRECT_ORDER) return sum.s + sum.c;                               \
-    return azimuth_form##S(sum.s + sum.c, theta, x, y, r2, f_end, slope_end, delta, delta_slope, \
-                           nm, wm, wn, ax, ay, az, bx, by, bz, cx, cy, cz, em);                  \
+ * rounding of itself by the caller, s = |c| > 0 (lanes with s <= 0 are the caller's to zero);
+ * `shares`, where not null, the parts the caller takes relative to its contour's reference point
+ * (c_0's part is then c_0 shares->lambert). One body for one point (T float, names ending in 1)
+ * and eight lanes (float8, 8). */
+#define PN_DEFINE_MOMENT_TERM(T, S, Sum, add)                                                     \
+  inline T moment_term##S(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T s, T nx, T ny,  \
+                          T nz, const PnArcShares##S* shares, const PnEmission* em) {             \
+    const float wx = em->wx, wy = em->wy, wz = em->wz;                                            \
+    T la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);             \
+    T ab = ax * bx + ay * by + az * bz;                                                           \
+    T theta = atan2(s, ab);                                                                       \
+    T inverse = 1.0f / (la * lb);                                                                 \
+    T sin_t = s * inverse, cos_t = ab * inverse;                                                  \
+    T versine = select(1.0f - cos_t, sin_t * sin_t / (1.0f + cos_t), cos_t >= 0.0f);              \
+    T mx = cx / s, my = cy / s, mz = cz / s;                                                      \
+    T ux = ax / la, uy = ay / la, uz = az / la;                                                   \
+    T tx = uy * mz - uz * my, ty = uz * mx - ux * mz, tz = ux * my - uy * mx;                     \
+    T x = wx * ux + wy * uy + wz * uz, y = wx * tx + wy * ty + wz * tz;                           \
+    T nm = nx * mx + ny * my + nz * mz, wm = wx * mx + wy * my + wz * mz;                         \
+    T wn = wx * nx + wy * ny + wz * nz;                                                           \
+    T f_end = x * cos_t + y * sin_t, slope_end = y * cos_t - x * sin_t;                           \
+    T delta = y * sin_t - x * versine, delta_slope = -x * sin_t - y * versine;                    \
+    T r2 = x * x + y * y;                                                                         \
+    T wb = (wx * bx + wy * by + wz * bz) / lb;                                                    \
+    T omega = 2.0f * atan2((wx * cx + wy * cy + wz * cz) * inverse, 1.0f + x + cos_t + wb);       \
+    Sum sum = {shares ? em->c[0] * shares->lambert : em->c[0] * theta * nm,                       \
+               0.0f};                    /* its parts may cancel: compensated */                  \
+    T f_prev = theta, f_prev2 = 0.0f;    /* F_{k−1}, F_{k−2} */                               \
+    T tau_prev = 0.0f, tau_prev2 = 0.0f; /* τ_{k−2}, τ_{k−3} */                             \
+    T d = 0.0f, xp = 1.0f;               /* D_{k−1}, x^{k−1} */                               \
+    for (int k = 1; k <= em->order; ++k) {                                                        \
+      const float kf = (float)k;                                                                  \
+      T bracket = d * slope_end + xp * delta_slope;                                               \
+      T f_k = ((kf - 1.0f) * r2 * f_prev2 - bracket) / kf;                                        \
+      T tau = k == 1 ? omega : ((kf - 2.0f) * tau_prev2 + wm * f_prev2) / kf; /* τ_{k−1} */    \
+      add(&sum, em->c[k] * (2.0f * (kf * wn * tau + nm * f_k) / (kf + 2.0f)));                    \
+      d = f_end * d + xp * delta;                                                                 \
+      xp *= x;                                                                                    \
+      f_prev2 = f_prev;                                                                           \
+      f_prev = f_k;                                                                               \
+      tau_prev2 = tau_prev;                                                                       \
+      tau_prev = tau;                                                                             \
+    }                                                                                             \
+    if (em->order <= PN_MOMENT_DIRECT_ORDER) return sum.s + sum.c;                                \
+    T direct = shares ? (sum.s + sum.c) - shares->drop : sum.s + sum.c;                           \
+    return azimuth_form##S(direct, theta, x, y, r2, f_end, slope_end, delta, delta_slope, nm, wm, \
+                           wn, ax, ay, az, bx, by, bz, cx, cy, cz, shares, em);                   \
   }
 PN_DEFINE_MOMENT_TERM(float, 1, PnSum, pn_sum_add)    /* one body for the scalar path */
 PN_DEFINE_MOMENT_TERM(float8, 8, PnSum8, pn_sum_add8) /* and for eight lanes */

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
+#include <utility>
 
 #include "geometry/tolerance.hpp"
 #include "luminaire_test_support.hpp"
@@ -172,10 +174,12 @@ Scene roomSolids() {
 
 const LuminaireAim kTurned{30.0, 20.0};
 
-// The room with a Lambertian file's luminaire (I = I0 cos γ, a 0.6 × 0.3 m opening), turned, as the
-// area model.
-Scene roomWithLambertianLuminaire(const TempDir& dir) {
-  const auto file = writeSymmetricIes(dir, "lambertian.ies", 0.6, 0.3, lambertianCandela);
+// The room with a Lambertian file's luminaire (I = I0 cos γ, a 0.6 × 0.3 m opening unless given),
+// turned, as the area model.
+Scene roomWithLambertianLuminaire(const TempDir& dir, double length = 0.6, double width = 0.3) {
+  const auto file =
+      writeSymmetricIes(dir, "lambertian-" + std::to_string(std::lround(length * 1000)) + "mm.ies",
+                        length, width, lambertianCandela);
   Scene area = roomSolids();
   area.luminaires.push_back(
       placeLuminaire({file, Vec3(1.0, 0.5, 3.0), kTurned, 1.0, LuminaireModel::Area}));
@@ -545,7 +549,8 @@ std::filesystem::path writeNarrowDownlight(const TempDir& dir, double diameterM)
     const double g = std::cos(gammaDeg * kPi / 180);
     return gammaDeg < 90 ? kI0 * g * (0.03 + 0.97 * std::pow(g, 39)) : 0.0;
   };
-  return writeFile(dir.path(), "downlight.ies", tf::iesText(spec));
+  const std::string name = "downlight-" + std::to_string(std::lround(diameterM * 1000)) + "mm.ies";
+  return writeFile(dir.path(), name, tf::iesText(spec));
 }
 
 TEST(AreaModelKernel, MatchesTheReferenceOnEveryPathOccludedOrNot) {
@@ -647,6 +652,9 @@ TEST(AreaModelKernel, NarrowBeamsMatchQuadratureOverTheOpening) {
   };
   const Case cases[] = {
       {"narrow downlight, 0.15 m disk", writeNarrowDownlight(dir, 0.15)},
+      // The example file's opening (data/luminaires/narrow-downlight.ies): 3 m away, each arc's
+      // term is of the order of 0.08 m / 3 m rad and the terms cancel to E, of its square.
+      {"narrow downlight, 0.08 m disk", writeNarrowDownlight(dir, 0.08)},
       {"spot 1 + cos^24, 0.3 x 0.3 m", writeSymmetricIes(dir, "spot.ies", 0.3, 0.3, spotCandela)},
   };
   std::vector<SamplePoint> points;
@@ -685,32 +693,39 @@ TEST(AreaModelKernel, NarrowBeamsMatchQuadratureOverTheOpening) {
   }
 }
 
+// The opening as the room's luminaire has it, and a 0.1 × 0.05 m one, whose largest vertex offset
+// is below 0.1 of its distance from most points, so that both take their unoccluded terms relative
+// to a vertex (kernels/lambert.cl, PN_SMALL_FACE).
 TEST(AreaModelKernel, ALambertianFileEqualsTheKernelsRectSourceOfTheSameFlux) {
   TempDir dir("luminaire-area");
-  const Scene area = roomWithLambertianLuminaire(dir);
-  const Luminaire& luminaire = area.luminaires.front();
-  ASSERT_EQ(luminaire.opening->fit.order(), 0);
-  const ConvexPolygon polygon = placedOpening(*luminaire.opening, luminaire.instances.front());
-  Scene rect = roomSolids();
-  rect.sources.push_back(areaSource(polygon.vertices(), kPi * kI0 / (kPi * polygon.area())));
-  const std::vector<SamplePoint> points = roomPoints();
-  for (const KernelPath& path : kKernelPaths) {
-    const std::vector<double> fromArea = kernelE(area, points, path.options);
-    const std::vector<double> fromRect = kernelE(rect, points, path.options);
-    double worst = 0.0;
-    int lit = 0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (fromRect[i] == 0.0) {
-        EXPECT_EQ(fromArea[i], 0.0) << path.name << " at " << points[i].position.transpose();
-        continue;
+  for (const auto& [length, width] : {std::pair{0.6, 0.3}, std::pair{0.1, 0.05}}) {
+    const Scene area = roomWithLambertianLuminaire(dir, length, width);
+    const Luminaire& luminaire = area.luminaires.front();
+    ASSERT_EQ(luminaire.opening->fit.order(), 0);
+    const ConvexPolygon polygon = placedOpening(*luminaire.opening, luminaire.instances.front());
+    Scene rect = roomSolids();
+    rect.sources.push_back(areaSource(polygon.vertices(), kPi * kI0 / (kPi * polygon.area())));
+    const std::vector<SamplePoint> points = roomPoints();
+    for (const KernelPath& path : kKernelPaths) {
+      const std::vector<double> fromArea = kernelE(area, points, path.options);
+      const std::vector<double> fromRect = kernelE(rect, points, path.options);
+      double worst = 0.0;
+      int lit = 0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        if (fromRect[i] == 0.0) {
+          EXPECT_EQ(fromArea[i], 0.0) << path.name << " at " << points[i].position.transpose();
+          continue;
+        }
+        ++lit;
+        worst = std::max(worst, std::abs(fromArea[i] / fromRect[i] - 1));
+        EXPECT_NEAR(fromArea[i], fromRect[i], 1e-6 * fromRect[i])
+            << length << " x " << width << " m, " << path.name << " at "
+            << points[i].position.transpose();
       }
-      ++lit;
-      worst = std::max(worst, std::abs(fromArea[i] / fromRect[i] - 1));
-      EXPECT_NEAR(fromArea[i], fromRect[i], 1e-6 * fromRect[i])
-          << path.name << " at " << points[i].position.transpose();
+      EXPECT_GT(lit, 1000);
+      std::printf("  %.2f x %.2f m opening, %s path: largest |area / rect − 1| %.2e\n", length,
+                  width, path.name, worst);
     }
-    EXPECT_GT(lit, 1000);
-    std::printf("  %s path: largest |area / rect − 1| %.2e\n", path.name, worst);
   }
 }
 
