@@ -182,11 +182,8 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_, host);
   }
-  // The cuts stop at half the dense limit: the transfer costs N², and on a large mesh the
-  // elements they add would cost more than the work plane gains.
-  const std::size_t cutLimit = mesh.maxElements / 2;
   const std::vector<Vec3> across = cornerCutDirections(
-      mesh_, mesh.cornerReach, cutLimit - std::min(cutLimit, mesh_.elements.size()),
+      mesh_, mesh.cornerReach, mesh.maxElements - std::min(mesh.maxElements, mesh_.elements.size()),
       report_.refinementCapped);
   if (std::any_of(across.begin(), across.end(), [](const Vec3& d) { return !d.isZero(); })) {
     mesh_ = cutAcross(mesh_, across, mesh.quadratureOrder, tolerance);
