@@ -43,8 +43,8 @@ struct FieldOptions {
   // the linear interpolant's error; the field interpolates quadratically through the midpoints,
   // closer still where E is smooth. Relative to the interreflected E, which is smooth and below
   // any pixel's total E whatever direct shadow crosses the triangle, so that the error relative
-  // to the total stays below 1e-3 too: the mesh's own accuracy on the total E (8.3e-4 with
-  // the default elements against an independent reference, docs/method.md).
+  // to the total stays below 1e-3 too: under the mesh's own accuracy on the total E (1.8e-3
+  // with the default elements, docs/method.md).
   double tolerance = 1e-3;
   // Cuts in four below an element's fan triangle: 5 levels take a 0.5 m element's triangles to
   // 1.6 cm. A triangle still uneven there (a concave corner, where the neighbouring face fills

@@ -160,6 +160,7 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
   // the sky face, cut below the scene).
   mesh_ = buildSurfaceMesh(skyFacesScene(scene), mesh);
+  NodeLight light = nodeLight(direct, scene, mesh_, host);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   if (mesh_.elements.size() > mesh.maxElements) {
     // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
@@ -174,19 +175,11 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
         mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits,
         MeshOptions::kDefaultLinkError));
   }
-  NodeLight light = nodeLight(direct, scene, mesh_, host);
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
                                                    mesh.maxElements, report_.refinementCapped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
-    light = nodeLight(direct, scene, mesh_, host);
-  }
-  const std::vector<Vec3> across = cornerCutDirections(
-      mesh_, mesh.cornerReach, mesh.maxElements - std::min(mesh.maxElements, mesh_.elements.size()),
-      report_.refinementCapped);
-  if (std::any_of(across.begin(), across.end(), [](const Vec3& d) { return !d.isZero(); })) {
-    mesh_ = cutAcross(mesh_, across, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_, host);
   }
   finishMesh(scene, host, light.direct, mesh.elementSize, start);

@@ -2,14 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <deque>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "geometry/bounding_box.hpp"
 #include "geometry/face_outside_solids.hpp"
-#include "geometry/plane.hpp"
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_quadrature.hpp"
 
@@ -33,23 +30,6 @@ bool anyInFront(const ConvexPolygon& polygon, const ConvexPolygon& other, double
   const Plane plane = polygon.plane();
   return std::any_of(other.vertices().begin(), other.vertices().end(),
                      [&](const Vec3& v) { return plane.signedDistance(v) > tolerance; });
-}
-
-// Normals closer than this (cosine) count as one plane's: an element and a parallel one that
-// faces it (a desk's underside over the floor) see each other evenly, with no direction to cut.
-constexpr double kCornerParallelCosine = 0.999;
-
-struct CornerDisk {
-  Vec3 centre = Vec3::Zero();
-  Vec3 normal = Vec3::UnitZ();
-  double radius = 0.0;  // m, centroid to farthest vertex
-};
-
-std::int64_t cornerCellKey(const Vec3& p, double cell) {
-  const auto index = [&](double x) {
-    return static_cast<std::int64_t>(std::floor(x / cell)) & 0x1FFFFF;
-  };
-  return (index(p.x()) << 42) | (index(p.y()) << 21) | index(p.z());
 }
 
 }  // namespace
@@ -285,87 +265,6 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options) {
   }
   placeNodes(mesh, options.quadratureOrder);
   return mesh;
-}
-
-std::vector<Vec3> cornerCutDirections(const SurfaceMesh& mesh, double reach, std::size_t limit,
-                                      bool& capped) {
-  const std::size_t n = mesh.elements.size();
-  std::vector<Vec3> direction(n, Vec3::Zero());
-  if (reach <= 0.0 || n == 0) return direction;
-  std::vector<CornerDisk> disks(n);
-  double largest = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const ConvexPolygon& polygon = mesh.elements[i].polygon;
-    disks[i].centre = polygon.centroid();
-    disks[i].normal = polygon.normal();
-    for (const Vec3& v : polygon.vertices())
-      disks[i].radius = std::max(disks[i].radius, (v - disks[i].centre).norm());
-    largest = std::max(largest, disks[i].radius);
-  }
-  // Two elements within reach lie at most 2·reach·largest apart: cells that long put them in
-  // neighbouring cells.
-  const double cell = std::max(2.0 * reach * largest, 1e-9);
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells;
-  for (std::size_t i = 0; i < n; ++i) cells[cornerCellKey(disks[i].centre, cell)].push_back(i);
-
-  std::vector<std::pair<double, std::size_t>> near;  // (distance over reach, element)
-  for (std::size_t i = 0; i < n; ++i) {
-    const CornerDisk& a = disks[i];
-    double closest = INFINITY;
-    Vec3 towards = Vec3::Zero();
-    for (int dz = -1; dz <= 1; ++dz)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) {
-          const auto it = cells.find(cornerCellKey(a.centre + cell * Vec3(dx, dy, dz), cell));
-          if (it == cells.end()) continue;
-          for (std::size_t j : it->second) {
-            const CornerDisk& b = disks[j];
-            if (std::abs(a.normal.dot(b.normal)) > kCornerParallelCosine) continue;
-            const Vec3 gap = b.centre - a.centre;
-            if (a.normal.dot(gap) <= 0.0 || b.normal.dot(gap) >= 0.0) continue;  // not facing
-            const double relative = gap.norm() / (reach * (a.radius + b.radius));
-            if (relative >= 1.0 || relative >= closest) continue;
-            closest = relative;
-            // The other element's normal points back at this one; its part in this element's
-            // plane is the direction across which the light changes fast.
-            towards = -(b.normal - b.normal.dot(a.normal) * a.normal).normalized();
-          }
-        }
-    if (closest < 1.0) {
-      direction[i] = towards;
-      near.emplace_back(closest, i);
-    }
-  }
-  if (near.size() > limit) {
-    capped = true;
-    std::sort(near.begin(), near.end());
-    for (std::size_t k = limit; k < near.size(); ++k) direction[near[k].second] = Vec3::Zero();
-  }
-  return direction;
-}
-
-SurfaceMesh cutAcross(const SurfaceMesh& mesh, const std::vector<Vec3>& directions, int order,
-                      double tolerance) {
-  SurfaceMesh cut;
-  cut.blackSolids = mesh.blackSolids;
-  cut.casterBlocks = mesh.casterBlocks;  // a part lies in its element, so in its block
-  for (std::size_t i = 0; i < mesh.elements.size(); ++i) {
-    const SurfaceElement& element = mesh.elements[i];
-    if (directions[i].isZero()) {
-      cut.elements.push_back(element);
-      continue;
-    }
-    const Plane across = Plane::through(element.polygon.centroid(), directions[i]);
-    for (const Plane& side : {across, Plane{-across.normal, -across.offset}}) {
-      ConvexPolygon part = element.polygon.clipped(side, tolerance);
-      if (part.empty()) continue;
-      const double area = part.area();
-      cut.elements.push_back({std::move(part), element.solid, element.face, element.reflectance,
-                              area, element.casterBlock});
-    }
-  }
-  placeNodes(cut, order);
-  return cut;
 }
 
 }  // namespace penumbra

@@ -27,14 +27,6 @@ struct MeshOptions {
   // (unevenElements in interreflection.cpp).
   double refinement = 1e-3;
   int refinementLevels = 3;
-  // After that refinement, each element that another face overlooks within `cornerReach` times
-  // the sum of their radii (centroid to centroid) is cut in two across the direction to it
-  // (cornerCutDirections): the reflected light changes fast towards a concave corner. 1.5 takes
-  // the elements next to a wall or a desk; on an empty 4 × 3 × 3 m room it brings the work
-  // plane's total E from 1.8e-3 to 8.3e-4 of an independent reference for 65 % more elements
-  // (docs/validation.md). 0 cuts nothing. The dense transfer's mesh only; the hierarchical
-  // transfer's trees are cut in four.
-  double cornerReach = 1.5;
   // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000; the solver works
   // on products with it and holds no other N × N matrix).
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
@@ -109,22 +101,5 @@ SurfaceMesh buildSurfaceMesh(const Scene& scene, const MeshOptions& options = {}
 // (a square into four), the others kept; nodes placed again with `order` per axis.
 SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, int order,
                        double tolerance);
-
-// Elements that another face overlooks at close range (a concave corner, the floor beside a
-// cabinet) are cut in two across the direction to that face. The reflected light there changes
-// fast towards the other face and slowly along it (at a concave corner like x·log x in the
-// distance x to the corner line), and a luminance uniform over a whole element misses that:
-// one cut halves the element where it matters and adds one element, not three.
-// Per element, the unit direction in its plane towards the closest element of another plane
-// that faces it within `reach` × (the sum of both elements' radii, centroid to farthest vertex),
-// centroid to centroid; zero where there is none, or where that element is parallel to it.
-// At most `limit` elements get a direction, the closest relative to their reach first.
-std::vector<Vec3> cornerCutDirections(const SurfaceMesh& mesh, double reach, std::size_t limit,
-                                      bool& capped);
-
-// The mesh with each element whose direction is not zero cut in two by the plane through its
-// centroid across that direction; its nodes placed with `order` per axis.
-SurfaceMesh cutAcross(const SurfaceMesh& mesh, const std::vector<Vec3>& directions, int order,
-                      double tolerance);
 
 }  // namespace penumbra
