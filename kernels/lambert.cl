@@ -36,9 +36,11 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
  * itself, but the terms are of the order of the face's angular size ρ (its size over its
  * distance; the switch reads the distance from vertex 0 to vertex m/2 over vertex 0's distance, a
  * square's diagonal in the figures below) and cancel to E, of the order of ρ², so
- * E keeps only about ρ of their relative precision. Where ρ < PN_SMALL_FACE in some lane of the
- * work-item the face's terms are taken relative to its reference vertex (arc_term.cl), which
- * keeps E to a few roundings of itself; elsewhere the terms above, unchanged. Measured against
+ * E keeps only about ρ of their relative precision. In each lane where ρ < PN_SMALL_FACE the
+ * face's terms are taken relative to its reference vertex (arc_term.cl), which keeps E to a few
+ * roundings of itself; in the other lanes the terms above, unchanged, so that a point's E does
+ * not depend on the points beside it in its work-item (a work-item of mixed lanes computes
+ * both). Measured against
  * the exact integral in double (square panels of 0.025 to 1.6 m, points 30° or more above both
  * horizons, tests/distant_source_test.cpp, with PN_SMALL_FACE 0 and 100): each term alone errs by
  * up to 9.6e-5 of E at ρ below 0.0125, 1.6e-5 at 0.025 to 0.05, 6.8e-6 at 0.05 to 0.1 and 3.1e-6
@@ -75,14 +77,17 @@ inline float3 vertex_offset(PnSourceFace face, int i, int k, const PnSceneTables
 /* Whether the face is small against its distance in some lane: the distance from its vertex 0 to
  * its vertex m/2 (the opposite corner of a rectangle, the opposite vertex of a disk's polygon)
  * below PN_SMALL_FACE of vertex 0's distance (x, y, z from P), read from the hi parts: a
- * criterion, not a term, at one more vertex and three products per lane. If so, *centre is the
- * face's reference point (vertex *k) from each lane's P, with the face's spread about it. */
+ * criterion, not a term, at one more vertex and three products per lane. If so, *lanes says in
+ * which lanes (each lane takes its own form, so that a point's E does not depend on the points
+ * beside it in its work-item) and *centre is the face's reference point (vertex *k) from each
+ * lane's P, with the face's spread about it. */
 inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
-                        float8 x, float8 y, float8 z, PnCentre8* centre, int* k_out) {
+                        float8 x, float8 y, float8 z, PnCentre8* centre, int* k_out, int8* lanes) {
   const float4 d = tables->sourceVertices[face.firstVertex + face.vertexCount / 2].hi -
                    tables->sourceVertices[face.firstVertex].hi;
   const float size2 = dot(d.xyz, d.xyz);
-  if (!pn_any(size2 < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z))) return false;
+  *lanes = size2 < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z);
+  if (!pn_any(*lanes)) return false;
   const int k = face_reference_vertex(face, tables);
   *k_out = k;
   float reach2 = 0.0f;
@@ -245,8 +250,13 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
   PnCentre8 centre;
   int k = 0;
-  if (small_face8(pts, face, tables, ax, ay, az, &centre, &k))
-    return whole_small_face8(pts, face, k, &centre, tables, &em);
+  int8 small_lanes = 0;
+  float8 e_small = 0.0f;
+  const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
+  if (any_small) {
+    e_small = whole_small_face8(pts, face, k, &centre, tables, &em);
+    if (pn_all8(small_lanes)) return e_small;
+  }
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
     pn_from8(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], pts, &bx, &by,
@@ -256,7 +266,9 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
     ay = by;
     az = bz;
   }
-  return select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
+  const float8 e =
+      select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
+  return any_small ? select(e, e_small, small_lanes) : e;
 }
 
 inline bool horizon_cuts8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
@@ -269,18 +281,16 @@ inline bool horizon_cuts8(const Points8* pts, PnSourceFace face, const PnSceneTa
   return pn_any(below);
 }
 
-inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+/* unoccluded_face8's sum with each term taken from P (centre null) or relative to the small
+ * face's reference vertex k. */
+inline float8 horizon_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
+                            const PnCentre8* centre, int k, const PnEmission* em) {
   const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
-  const PnEmission em = emission_of(face, tables);
-  PnCentre8 small;
-  int k = 0;
   float8 ax, ay, az, bx, by, bz;
-  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
-  const PnCentre8* centre = small_face8(pts, face, tables, ax, ay, az, &small, &k) ? &small : 0;
   HorizonSum8 h;
-  horizon_begin8(&h, centre, nx, ny, nz, &em);
+  horizon_begin8(&h, centre, nx, ny, nz, em);
   const int m = face.vertexCount;
-  if (centre) face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
+  face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
   float8 ha =
       centre ? h.centre_height + (nx * ax + ny * ay + nz * az) : nx * ax + ny * ay + nz * az;
   for (int i = 0; i < m; ++i) {
@@ -289,4 +299,18 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   }
   float8 sum = small_face_sum8(centre, horizon_end8(&h, nx, ny, nz));
   return select((float8)(0.0f), sum, in_front8(face, pts->px, pts->py, pts->pz));
+}
+
+inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+  const PnEmission em = emission_of(face, tables);
+  PnCentre8 small;
+  int k = 0;
+  int8 small_lanes = 0;
+  float8 ax, ay, az;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
+  if (!small_face8(pts, face, tables, ax, ay, az, &small, &k, &small_lanes))
+    return horizon_face8(pts, face, tables, 0, 0, &em);
+  const float8 e_small = horizon_face8(pts, face, tables, &small, k, &em);
+  if (pn_all8(small_lanes)) return e_small;
+  return select(horizon_face8(pts, face, tables, 0, 0, &em), e_small, small_lanes);
 }

@@ -51,6 +51,10 @@ inline bool __attribute__((overloadable)) pn_any(int m) {
 inline bool __attribute__((overloadable)) pn_any(int8 m) {
   return __builtin_reduce_or(m) != 0;
 }
+/* Whether every lane of an eight-lane mask (0 or -1 each) is set. */
+inline bool pn_all8(int8 m) {
+  return __builtin_reduce_and(m) != 0;
+}
 
 /* Compensated sums (Knuth's TwoSum: s + c carries the sum to about twice float precision). A
  * contour's terms are large and cancel: a window 7 m away past a column gives terms of 0.29 that

@@ -37,6 +37,15 @@ struct PanelPastBox {
   Vec3 boxMin, boxMax;
 };
 
+// The kernel's three paths for a scene with solids: each is held to the same bound.
+struct EnginePath {
+  const char* name;
+  EngineOptions options;
+};
+const EnginePath kEnginePaths[] = {{"culled, eight lanes", {true, true, true}},
+                                   {"culled, scalar", {true, true, false}},
+                                   {"plain (--no-culling)", {false}}};
+
 // The open office's panel at (1.5, 1.5) and the chair back of its workstation 20, seen from the
 // work plane beside that chair: points from full light through the penumbra into the umbra.
 TEST(DistantSource, PenumbraPastANearBoxMeetsTheExactProjection) {
@@ -64,13 +73,7 @@ TEST(DistantSource, PenumbraPastANearBoxMeetsTheExactProjection) {
   for (std::size_t k = 0; k < points.size(); ++k)
     floorError = std::max(floorError, std::abs(lit[k] - unoccluded[k]) / unoccluded[k]);
   std::printf("unoccluded formula: max |E - exact| / E_unoccluded = %.2e\n", floorError);
-  const struct {
-    const char* name;
-    EngineOptions options;
-  } paths[] = {{"culled, eight lanes", {true, true, true}},
-               {"culled, scalar", {true, true, false}},
-               {"plain (--no-culling)", {false}}};
-  for (const auto& path : paths) {
+  for (const EnginePath& path : kEnginePaths) {
     const std::vector<double> e =
         IlluminanceEngine(cpuDevice(), scene, path.options).illuminance(points);
     double worst = 0.0;
@@ -104,13 +107,7 @@ TEST(DistantSource, ASmallPanelFarAwayMeetsTheExactContourIntegral) {
       points.push_back({Vec3(4.0, v, 0.1 + 0.15 * i), -Vec3::UnitX(), -1});  // a wall at 4 m
     }
   const std::vector<double> exact = exactIlluminance(scene, points)[0];
-  const struct {
-    const char* name;
-    EngineOptions options;
-  } paths[] = {{"culled, eight lanes", {true, true, true}},
-               {"culled, scalar", {true, true, false}},
-               {"plain (--no-culling)", {false}}};
-  for (const auto& path : paths) {
+  for (const EnginePath& path : kEnginePaths) {
     const std::vector<double> e =
         IlluminanceEngine(cpuDevice(), scene, path.options).illuminance(points);
     double worst = 0.0;
