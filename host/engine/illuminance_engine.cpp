@@ -1,6 +1,8 @@
 #include "engine/illuminance_engine.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -154,8 +156,15 @@ IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint
   // depend on the point's neighbours.
   if (!state_->options.culling || points.size() <= PN_LANES) return evaluateInOrder(points, parts);
   const std::vector<std::size_t> order = mortonOrder(points);
+  // The copies in and out of Morton order are point by point: in parallel, the same values.
+  const auto eachPoint = [](std::size_t n, const auto& body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) body(i);
+                      });
+  };
   std::vector<SamplePoint> sorted(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = points[order[i]];
+  eachPoint(order.size(), [&](std::size_t i) { sorted[i] = points[order[i]]; });
   const IlluminanceResult inOrder = evaluateInOrder(sorted, parts);
   IlluminanceResult result;
   result.sourceCount = inOrder.sourceCount;
@@ -164,7 +173,7 @@ IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint
   result.shadowClass.resize(inOrder.shadowClass.size());
   result.bySource.resize(inOrder.bySource.size());
   const bool perSource = !inOrder.shadowClass.empty() || !inOrder.bySource.empty();
-  for (std::size_t i = 0; i < order.size(); ++i) {
+  eachPoint(order.size(), [&](std::size_t i) {
     const std::size_t to = order[i];
     result.illuminance[to] = inOrder.illuminance[i];
     for (std::size_t s = 0; perSource && s < sources; ++s) {
@@ -173,7 +182,7 @@ IlluminanceResult IlluminanceEngine::evaluateSources(std::span<const SamplePoint
       if (!inOrder.bySource.empty())
         result.bySource[to * sources + s] = inOrder.bySource[i * sources + s];
     }
-  }
+  });
   return result;
 }
 
@@ -267,16 +276,19 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   std::vector<cl_int>& own = kept.own;
   own.resize(padded);
   const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
-  for (std::size_t i = 0; i < padded; ++i) {
-    const SamplePoint& p = points[std::min(i, n - 1)];
-    const PnPosition position = toPosition(p.position, origin);
-    for (int k = 0; k < 3; ++k) {
-      coords[k][i] = position.hi.s[k];
-      coords[3 + k][i] = position.lo.s[k];
-      coords[6 + k][i] = static_cast<float>(p.normal[k]);
-    }
-    own[i] = p.solid;
-  }
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, padded, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i != range.end(); ++i) {
+                        const SamplePoint& p = points[std::min(i, n - 1)];
+                        const PnPosition position = toPosition(p.position, origin);
+                        for (int k = 0; k < 3; ++k) {
+                          coords[k][i] = position.hi.s[k];
+                          coords[3 + k][i] = position.lo.s[k];
+                          coords[6 + k][i] = static_cast<float>(p.normal[k]);
+                        }
+                        own[i] = p.solid;
+                      }
+                    });
   // The volumes are grown by twice the kernel's tolerance at these points: the kernel tests
   // points against them within its tolerance, in float.
   const double margin = 2.0 * kernelLengthAt(state_->packed, points);

@@ -1,5 +1,8 @@
 #include "geometry/morton_order.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cstdint>
 
@@ -59,16 +62,21 @@ std::vector<std::size_t> mortonOrder(std::span<const SamplePoint> points) {
   const double extent = (hi - lo).maxCoeff();
   const double cells = double{1 << 21} - 1.0;
   const double scale = extent > 0.0 ? cells / extent : 0.0;
+  // Each point's key depends on that point alone: computed in parallel, the same keys.
   std::vector<std::uint64_t> keys(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3 q = (points[i].position - lo) * scale;
-    std::uint64_t key = 0;
-    for (int k = 0; k < 3; ++k)
-      key |= spreadBits(static_cast<std::uint64_t>(std::clamp(q[k], 0.0, cells))) << k;
-    keys[i] = key;
-  }
   std::vector<std::size_t> order(points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, points.size(), 4096),
+      [&](const tbb::blocked_range<std::size_t>& range) {
+        for (std::size_t i = range.begin(); i != range.end(); ++i) {
+          const Vec3 q = (points[i].position - lo) * scale;
+          std::uint64_t key = 0;
+          for (int k = 0; k < 3; ++k)
+            key |= spreadBits(static_cast<std::uint64_t>(std::clamp(q[k], 0.0, cells))) << k;
+          keys[i] = key;
+          order[i] = i;
+        }
+      });
   radixSortByKey(keys, order);
   return order;
 }

@@ -3,13 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <stdexcept>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "geometry/tolerance.hpp"
+#include "grid/background_call.hpp"
+#include "grid/heap_prefault.hpp"
 
 namespace penumbra {
 
@@ -66,6 +67,7 @@ SolidLocator::SolidLocator(const Scene& scene) : scene_(&scene) {
       unbounded_.push_back(s);
     }
   }
+  boxed_ = bounded;
   if (bounded.empty()) return;
   // About as many cells as solids, cubes as far as the scene's extent allows.
   const Vec3 extent = (bounds_.hi - bounds_.lo).cwiseMax(1e-3 * (bounds_.hi - bounds_.lo).norm());
@@ -109,6 +111,50 @@ std::span<const int> SolidLocator::candidates(const Vec3& p) const {
     index = index * cells_[k] + std::clamp(static_cast<int>(std::floor(f)), 0, cells_[k] - 1);
   }
   return cellSolids_[index];
+}
+
+int SolidLocator::classifyAmong(SamplePoint& point, std::span<const int> solids) const {
+  int inside = -1;
+  double bestAlignment = -2.0;
+  point.solid = -1;
+  for (int s : solids) {
+    if (!boxes_[s].empty() && !holds(boxes_[s], point.position)) continue;
+    const ConvexPolyhedron& shape = scene_->solids[s].shape;
+    // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
+    // one whose face looks where the point looks: the other one must still be able to shade it.
+    const int face = shape.faceContaining(point.position, point.normal, tolerance_);
+    if (face >= 0) {
+      const double alignment = shape.faces()[face].plane.normal.dot(point.normal);
+      if (alignment > bestAlignment) {
+        bestAlignment = alignment;
+        point.solid = s;
+      }
+    }
+    if (inside < 0 && shape.containsStrictly(point.position, tolerance_)) inside = s;
+  }
+  return inside;
+}
+
+void SolidLocator::classify(std::span<SamplePoint> points, std::span<int> inside) const {
+  if (points.empty()) return;
+  // A solid can answer for a point only if its box holds the point, so only if its box meets
+  // the run's: the others are left out once, and the rest tested in scene order as one point's
+  // classify tests them.
+  BoundingBox run;
+  for (const SamplePoint& p : points) run.add(p.position);
+  std::vector<int> solids;
+  auto a = boxed_.begin();
+  auto b = unbounded_.begin();
+  while (a != boxed_.end() || b != unbounded_.end()) {
+    if (b == unbounded_.end() || (a != boxed_.end() && *a < *b)) {
+      if (boxes_[*a].overlaps(run)) solids.push_back(*a);
+      ++a;
+    } else {
+      if (boxes_[*b].empty()) solids.push_back(*b);  // boxed ones come from boxed_
+      ++b;
+    }
+  }
+  for (std::size_t k = 0; k < points.size(); ++k) inside[k] = classifyAmong(points[k], solids);
 }
 
 int SolidLocator::classify(SamplePoint& point) const {
@@ -204,14 +250,14 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
       const std::size_t count = std::min(block, n - i);
       aheadPoints.resize(count);
       aheadInside.resize(count);
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t k = range.begin(); k != range.end(); ++k) {
-                            SamplePoint point{grid.position(i + k), grid.normal(i + k), -1};
-                            aheadInside[k] = solids.classify(point);
-                            aheadPoints[k] = point;
-                          }
-                        });
+      tbb::parallel_for(
+          tbb::blocked_range<std::size_t>(0, count, 1024),
+          [&](const tbb::blocked_range<std::size_t>& range) {
+            for (std::size_t k = range.begin(); k != range.end(); ++k)
+              aheadPoints[k] = SamplePoint{grid.position(i + k), grid.normal(i + k), -1};
+            solids.classify(std::span(aheadPoints).subspan(range.begin(), range.size()),
+                            std::span(aheadInside).subspan(range.begin(), range.size()));
+          });
     }
     return i - aheadFirst;
   };
@@ -323,16 +369,28 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   // this thread classifies and gathers the next. The estimator sees the same batches in the same
   // order, one call at a time, and the sink the same chunks in grid order, on this thread.
   if (progress) progress(0, n);
+  BackgroundCall<PointIlluminance> estimator;
+  if (n > batchSize) {
+    // Batches after the first reuse the first's memory: both threads map theirs at once
+    // (heap_prefault.hpp), about 512 bytes a point of a batch each.
+    const std::size_t bytes = batchSize * 512;
+    estimator.start([bytes] {
+      prefaultHeap(bytes);
+      return PointIlluminance();
+    });
+    prefaultHeap(bytes);
+    estimator.result();
+  }
   Chunk current, following;
   gather(current);
   while (!current.inside.empty()) {
-    std::future<PointIlluminance> values;
-    if (!current.outside.empty())
-      values = std::async(std::launch::async, [&estimate, &current] {
+    const bool estimated = !current.outside.empty();
+    if (estimated)
+      estimator.start([&estimate, &current] {
         return estimate(std::span<const SamplePoint>(current.outside));
       });
     gather(following);
-    finish(current, values.valid() ? values.get() : PointIlluminance());
+    finish(current, estimated ? estimator.result() : PointIlluminance());
     std::swap(current, following);
   }
   run.metrics = sums.metrics(grid.spacing);

@@ -35,9 +35,14 @@ class SolidLocator {
   // looks when it touches several; -1 for none) and returns the first solid, in scene order,
   // that strictly contains the point (-1 for none).
   int classify(SamplePoint& point) const;
+  // classify for each of a run of nearby points (their positions and normals set), inside[k]
+  // its answer: the same answers, the solids that can hold any of them found once for the run.
+  void classify(std::span<SamplePoint> points, std::span<int> inside) const;
 
  private:
   std::span<const int> candidates(const Vec3& p) const;
+  // Sets point.solid and returns the containing solid, testing `solids` (ascending) only.
+  int classifyAmong(SamplePoint& point, std::span<const int> solids) const;
 
   const Scene* scene_;
   double tolerance_ = 0.0;
@@ -46,6 +51,7 @@ class SolidLocator {
   int cells_[3] = {1, 1, 1};
   std::vector<std::vector<int>> cellSolids_;  // per cell, ascending solid indices
   std::vector<int> unbounded_;                // solids whose box could not be bounded
+  std::vector<int> boxed_;                    // solids with a box, ascending
 };
 
 // The sample points of one grid in the grid's own order (row-major for planar grids, the order

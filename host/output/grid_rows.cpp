@@ -33,13 +33,15 @@ void GridRows::addRow(const Vec3& position, const Vec3& normal, const GridRowVal
   csv_.resize(start + 17 * (kMaxNumberText + 1) + insideField.size() + 1);
   char* out = writePoint(csv_.data() + start, position, normal, ',');
   const char* e = out;
-  // The .pts line: the same six numbers, blank-separated.
+  // The .pts line: the same six numbers, blank-separated: x's text, then the tail's blank form.
   const std::size_t ptsStart = pts_.size();
   const auto pointSize = static_cast<std::size_t>(e - (csv_.data() + start));
+  const std::size_t xSize = pointSize - tailSize_;
   pts_.resize(ptsStart + pointSize);
   char* point = pts_.data() + ptsStart;
-  std::memcpy(point, csv_.data() + start, pointSize);
-  std::replace(point, point + pointSize, ',', ' ');
+  std::memcpy(point, csv_.data() + start, xSize);
+  point[xSize - 1] = ' ';
+  std::memcpy(point + xSize, tailBlankText_, tailSize_);
   point[pointSize - 1] = '\n';
   out = writeNumber(out, illuminance, illuminanceDigits_);  // E hardly ever repeats: not looked up
   const auto eSize = static_cast<std::size_t>(out - e);
@@ -114,6 +116,7 @@ char* GridRows::writePoint(char* out, const Vec3& position, const Vec3& normal, 
   }
   tailSize_ = static_cast<std::size_t>(out - tail);
   std::memcpy(tailText_, tail, tailSize_);
+  std::replace_copy(tail, out, tailBlankText_, separator, ' ');
   std::copy(std::begin(bits), std::end(bits), std::begin(tailBits_));
   tailSeparator_ = separator;
   return out;

@@ -107,7 +107,8 @@ class GridRows {
   // row of a planar grid only x changes, so the rest of a point is copied whole.
   std::uint64_t tailBits_[5] = {};
   char tailText_[5 * (kMaxNumberText + 1)];
-  std::size_t tailSize_ = 0;  // 0: nothing kept
+  char tailBlankText_[5 * (kMaxNumberText + 1)];  // the same with blanks for separators (.pts)
+  std::size_t tailSize_ = 0;                      // 0: nothing kept
   char tailSeparator_ = 0;
   double outdoor_ = 0.0;  // lx: E_h for the daylight factor columns; 0: none
   bool sunColumn_ = false;
