@@ -277,18 +277,31 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     chunk.outsideAt.clear();
     chunk.inside.clear();
     chunk.onSolid.clear();
+    chunk.outside.reserve(batchSize);
+    chunk.outsideAt.reserve(batchSize);
+    chunk.inside.reserve(batchSize);
+    chunk.onSolid.reserve(batchSize);
     while (next < n && chunk.outside.size() < batchSize) {
-      const std::size_t k = classified(next);
-      const SamplePoint& point = aheadPoints[k];
-      const int in = aheadInside[k];
-      if (in < 0) {
-        chunk.outsideAt.push_back(chunk.inside.size());
-        chunk.outside.push_back(point);
+      // The rest of the classified block, point by point.
+      const std::size_t first = classified(next);
+      const std::size_t end = first + std::min(aheadPoints.size() - first, n - next);
+      std::size_t k = first;
+      for (; k < end && chunk.outside.size() < batchSize; ++k) {
+        const SamplePoint& point = aheadPoints[k];
+        const int in = aheadInside[k];
+        if (in < 0) {
+          chunk.outsideAt.push_back(chunk.inside.size());
+          chunk.outside.push_back(point);
+        }
+        chunk.inside.push_back(in);
+        chunk.onSolid.push_back(point.solid);
+        // A run of inside points with nothing waiting for the estimator goes on at once.
+        if (chunk.outside.empty() && chunk.inside.size() >= batchSize) {
+          ++k;
+          break;
+        }
       }
-      chunk.inside.push_back(in);
-      chunk.onSolid.push_back(point.solid);
-      ++next;
-      // A run of inside points with nothing waiting for the estimator goes on at once.
+      next += k - first;
       if (chunk.outside.empty() && chunk.inside.size() >= batchSize) break;
     }
   };
