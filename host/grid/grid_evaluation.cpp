@@ -10,7 +10,7 @@
 
 #include "geometry/tolerance.hpp"
 #include "grid/background_call.hpp"
-#include "grid/heap_prefault.hpp"
+#include "memory/page_prefault.hpp"
 
 namespace penumbra {
 
@@ -385,7 +385,7 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
   BackgroundCall<PointIlluminance> estimator;
   if (n > batchSize) {
     // Batches after the first reuse the first's memory: both threads map theirs at once
-    // (heap_prefault.hpp), about 512 bytes a point of a batch each.
+    // (memory/page_prefault.hpp), about 512 bytes a point of a batch each.
     const std::size_t bytes = batchSize * 512;
     estimator.start([bytes] {
       prefaultHeap(bytes);

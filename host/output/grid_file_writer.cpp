@@ -4,7 +4,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "grid/heap_prefault.hpp"
+#include "memory/page_prefault.hpp"
 #include "output/result_files.hpp"
 
 namespace penumbra {
@@ -29,7 +29,7 @@ GridFileWriter::GridFileWriter(const std::filesystem::path& directory, const Sce
   csv_.write(header.data(), static_cast<std::streamsize>(header.size()));
   // A batch's rows (about 80 bytes a point in the three files, their buffers grown by doubling)
   // stay in the writer's memory from batch to batch: mapped at once for a batch of up to
-  // 65 536 points, the estimator's (heap_prefault.hpp).
+  // 65 536 points, the estimator's (memory/page_prefault.hpp).
   const std::size_t rowBytes = std::min<std::size_t>(grid.size(), std::size_t{1} << 16) * 256;
   thread_ = std::thread([this, rowBytes] {
     prefaultHeap(rowBytes);
