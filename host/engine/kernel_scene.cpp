@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "geometry/nishita.hpp"
+#include "memory/page_prefault.hpp"
 #include "photometry/luminance_fit.hpp"
 
 static_assert(sizeof(PnSourceFace) == 48, "PnSourceFace layout must match kernels/shared_types.h");
@@ -122,6 +123,14 @@ void appendOccluder(KernelScene& packed, const ShadowCaster& caster, const Conve
   if (shape.faces().size() > PN_MAX_OCCLUDER_FACES)
     throw std::runtime_error(fmt::format("a solid has {} faces; the kernel handles at most {}",
                                          shape.faces().size(), PN_MAX_OCCLUDER_FACES));
+  // The scene's tables grow to hundreds of MB with thousands of element faces (interreflection):
+  // their pages are mapped as they grow (memory/page_prefault.hpp).
+  const std::size_t faces = shape.faces().size();
+  reservePopulated(packed.planes,
+                   2 * faces + caster.volume.penumbra.size() + caster.volume.umbra.size());
+  reservePopulated(packed.edges, shape.edges().size());
+  reservePopulated(packed.occluderVertices, shape.vertices().size());
+  reservePopulated(packed.occluders, 1);
   PnOccluder o{};
   o.solid = caster.solid;
   o.behindAperture = caster.behindAperture ? 1 : 0;

@@ -7,6 +7,7 @@
 // refuses the call and leaves the pages to their first use: the same values, the old cost.
 #include <sys/mman.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
@@ -38,6 +39,25 @@ void resizePopulated(std::vector<T>& v, std::size_t n) {
   populatePages(grown.data(), n * sizeof(T));
   grown.assign(v.begin(), v.end());
   grown.resize(n);
+  v.swap(grown);
+}
+
+// Room for `extra` more elements after v's, growing as push_back does (at least doubling), the
+// new allocation's pages mapped before the elements are copied in: for tables appended to piece
+// by piece whose final size is not known ahead.
+template <typename T>
+void reservePopulated(std::vector<T>& v, std::size_t extra) {
+  const std::size_t needed = v.size() + extra;
+  if (needed <= v.capacity()) return;
+  const std::size_t capacity = std::max(needed, 2 * v.capacity());
+  if (capacity * sizeof(T) < kPopulateMinBytes) {
+    v.reserve(capacity);
+    return;
+  }
+  std::vector<T> grown;
+  grown.reserve(capacity);
+  populatePages(grown.data(), capacity * sizeof(T));
+  grown.assign(v.begin(), v.end());
   v.swap(grown);
 }
 
