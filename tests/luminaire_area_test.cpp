@@ -734,22 +734,26 @@ TEST(AreaModelKernel, ALambertianFileEqualsTheKernelsRectSourceOfTheSameFlux) {
 // the penumbra is 0.07 to 0.1 m wide. Each arc's term is of the order of the opening's angular
 // size and the terms cancel to E, of its square: the penumbra paths take them relative to the
 // opening's reference vertex where it is small against its distance (kernels/contour.cl,
-// PnPieceForm), as the unoccluded path does. Every path is held to kSmallOpeningPastTable of the
-// point's unoccluded E against the reference (closed forms in double over the visible opening);
-// with each piece's term taken alone the paths erred by up to 3.2e-5 (the Lambertian opening, the
-// plain path). The sanitizer build takes every third point.
-constexpr double kSmallOpeningPastTable = 1e-5;
+// PnPieceForm), as the unoccluded path does. Every path is held to `bound` of the point's
+// unoccluded E against the reference (closed forms in double over the visible opening). Measured
+// on every path: the downlight 9.1e-6, whose high power's parts of each arc are still taken from
+// the arc alone (7.3e-6 at points the table does not shade, on the unoccluded path); the
+// Lambertian opening 2.3e-6, the rounding of the contour's ends' directions (the table's
+// vertices from the point, the side planes' crossings: DistantSource's small panel past a table
+// says why). With each piece's term taken alone: 1.25e-5 and 5.2e-6. The sanitizer build takes
+// every third point.
 
 TEST(AreaModelKernel, SmallOpeningsPastTheTableMatchTheReferenceOnEveryPath) {
   TempDir dir("luminaire-area");
   struct Case {
     const char* name;
     std::filesystem::path file;
+    double bound;  // of E unoccluded
   };
   const Case cases[] = {
-      {"narrow downlight, 0.08 m disk", writeNarrowDownlight(dir, 0.08)},
+      {"narrow downlight, 0.08 m disk", writeNarrowDownlight(dir, 0.08), 1.2e-5},
       {"Lambertian, 0.1 x 0.05 m",
-       writeSymmetricIes(dir, "lambertian-100mm.ies", 0.1, 0.05, lambertianCandela)},
+       writeSymmetricIes(dir, "lambertian-100mm.ies", 0.1, 0.05, lambertianCandela), 3e-6},
   };
   std::vector<SamplePoint> points;
   int index = 0;
@@ -779,9 +783,9 @@ TEST(AreaModelKernel, SmallOpeningsPastTheTableMatchTheReferenceOnEveryPath) {
         const double error = std::abs(kernel[i] - reference[i]) / unoccluded[i];
         worst = std::max(worst, error);
         if (reference[i] < (1 - 1e-3) * unoccluded[i]) worstShaded = std::max(worstShaded, error);
-        EXPECT_LE(error, kSmallOpeningPastTable)
-            << c.name << ", " << path.name << " at " << points[i].position.transpose()
-            << ": E = " << kernel[i] << " lx, reference " << reference[i] << " lx";
+        EXPECT_LE(error, c.bound) << c.name << ", " << path.name << " at "
+                                  << points[i].position.transpose() << ": E = " << kernel[i]
+                                  << " lx, reference " << reference[i] << " lx";
       }
       std::printf(
           "  %s, %s path: %zu points (%d in the penumbra), largest |kernel − reference| %.2e of "
