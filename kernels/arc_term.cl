@@ -1,6 +1,7 @@
-/* One boundary arc's term, taken relative to a reference point of its contour, for the unoccluded
- * paths of a face small against its distance from P (lambert.cl, PN_SMALL_FACE; docs/method.md, the
- * precision note).
+/* One boundary arc's term, taken relative to a reference point of its contour, for a face small
+ * against its distance from P (lambert.cl, PN_SMALL_FACE; docs/method.md, the precision note), on
+ * the unoccluded paths and the penumbra paths alike (contour.cl, PnPieceForm). One body for one
+ * point (T float, names ending in 1) and eight lanes (float8, 8).
  *
  * Lambert's term of the arc a → b (vectors from P) is T = θ n·(b × a) / |b × a|, θ the angle
  * between a and b. For a small, distant face each term is of the order of the arc's angle while
@@ -26,7 +27,8 @@
  * term) still gives −n·(C × (α − β)) / |C|².
  *
  * The offsets are vertex differences from the scene's double-float positions, exact to a rounding
- * of themselves however far from P. A face of polynomial luminance adds the moment term's powers
+ * of themselves however far from P (on the penumbra paths, the visible contour's ends as
+ * PnPieceForm takes them). A face of polynomial luminance adds the moment term's powers
  * above 0 (luminance_moments.cl) to c_0 T'. */
 
 #include "luminance_moments.cl"
