@@ -196,8 +196,11 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * and elsewhere (a crossing direction, an occluder's point, an aperture's corner: any vector p
  * from P, of any length) p taken along its ray to the face's plane, centre_offset:
  * C + α = s p, s = N·C / N·p (N the face's normal), α = fma(p, s, −C), good to a rounding of
- * itself, so that C + α keeps p's direction to a rounding of α rather than of C (p and −p give the
- * same α bit for bit). Pieces that meet at a point compute the same α there, so the part T' leaves
+ * itself, so that C + α keeps p's direction to a rounding of α rather than of C. An end whose ray
+ * meets the plane more than 2|C| from C (PN_PIECE_FAR: an ill-conditioned crossing of two nearly
+ * parallel side planes may point far from the face, or along the plane) is taken to the sphere of
+ * radius |C| instead, s = |C| / |p|, so that its terms and their roundings stay of the order of
+ * the face's. Pieces that meet at a point compute the same α there, so the part T' leaves
  * out of every arc telescopes around the visible contour as around a whole face; and every α lies
  * in the face's plane, so that two ends that meet only to within a small angle (a sliver the tie
  * rule keeps or drops, kernels/contour.cl's head) are as near in α as in direction, and the
@@ -205,7 +208,7 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * interpolations keep E to a few roundings of itself as whole_face8 does; what is left is the
  * direction of the other ends, a rounding of the vectors from P each (docs/method.md, the
  * precision note). */
-#define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end is taken to the sphere |C| instead */
+#define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end goes to the sphere of radius |C| */
 #define PN_DEFINE_PIECE_FORM(T, M, S)                                                              \
   typedef struct {                                                                                 \
     const PnEmission* em; /* how the face emits */                                                 \
