@@ -143,8 +143,9 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * and the visible contour closes; ends computed on each edge from its own parameter t would
  * leave a gap of a few roundings, and a gap of δ rad costs about L·δ however small the source
  * looks (tests/distant_source_test.cpp). turn_to_point then points it to the side of the edge's
- * own point p at t, in the lanes of `set`; where the planes are nearly parallel (sine below
- * PN_EPS_REL) the line is ill-defined and p stays. Its length does not matter (piece_term). */
+ * own point p at t, in the lanes of `set` (the lanes it turns are returned); where the planes are
+ * nearly parallel (sine below PN_EPS_REL) the line is ill-defined and p stays. Its length does not
+ * matter (piece_term). */
 #define PN_DEFINE_CROSSING(T, M, S)                                                                \
   inline void crossing_direction##S(T msx, T msy, T msz, int self, T mox, T moy, T moz, int other, \
                                     T* dx, T* dy, T* dz) {                                         \
@@ -155,13 +156,14 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     *dy = pz * qx - px * qz;                                                                       \
     *dz = px * qy - py * qx;                                                                       \
   }                                                                                                \
-  inline void turn_to_point##S(T dx, T dy, T dz, M set, T* px, T* py, T* pz) {                     \
+  inline M turn_to_point##S(T dx, T dy, T dz, M set, T* px, T* py, T* pz) {                        \
     M use = set & (dx * dx + dy * dy + dz * dz > PN_EPS_REL * PN_EPS_REL);                         \
-    if (!pn_any(use)) return;                                                                      \
+    if (!pn_any(use)) return use;                                                                  \
     T sign = select((T)(1.0f), (T)(-1.0f), dx * *px + dy * *py + dz * *pz < 0.0f);                 \
     *px = select(*px, sign * dx, use);                                                             \
     *py = select(*py, sign * dy, use);                                                             \
     *pz = select(*pz, sign * dz, use);                                                             \
+    return use;                                                                                    \
   }
 
 /* Lambert's term of the piece (a → b) of an edge, as edge_term8: the great circle through the
@@ -185,6 +187,64 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     return select(term, (T)(0.0f), s <= 0.0f);                                                 \
   }
 
+/* A face small against its distance from P (lambert.cl, PN_SMALL_FACE) has pieces whose terms
+ * cancel to E as its edges' do, and takes them relative to its reference point C (arc_term.cl,
+ * T') in the lanes where it is small. Each end of a piece is then an offset α from C with C + α
+ * on the end's ray from P: the exact vertex offset (vertex_offset) at a vertex of the face, the
+ * same interpolation of two such offsets at a point between them (a horizon crossing, a piece end
+ * that is not a crossing: edge_point on the offsets, with the parameter the vectors from P use),
+ * and elsewhere (a crossing direction, an occluder's point, an aperture's corner: any vector p
+ * from P, of any length) p taken along its ray to the face's plane, centre_offset:
+ * C + α = s p, s = N·C / N·p (N the face's normal), α = fma(p, s, −C), good to a rounding of
+ * itself, so that C + α keeps p's direction to a rounding of α rather than of C. An end whose ray
+ * meets the plane more than 2|C| from C (PN_PIECE_FAR: an ill-conditioned crossing of two nearly
+ * parallel side planes may point far from the face, or along the plane) is taken to the sphere of
+ * radius |C| instead, s = |C| / |p|, so that its terms and their roundings stay of the order of
+ * the face's. Pieces that meet at a point compute the same α there, so the part T' leaves
+ * out of every arc telescopes around the visible contour as around a whole face; and every α lies
+ * in the face's plane, so that two ends that meet only to within a small angle (a sliver the tie
+ * rule keeps or drops, kernels/contour.cl's head) are as near in α as in direction, and the
+ * telescoping part leaves no more than Lambert's terms would for that gap. Vertices and their
+ * interpolations keep E to a few roundings of itself as whole_face8 does; what is left is the
+ * direction of the other ends, a rounding of the vectors from P each (docs/method.md, the
+ * precision note). */
+#define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end goes to the sphere of radius |C| */
+#define PN_DEFINE_PIECE_FORM(T, M, S)                                                              \
+  typedef struct {                                                                                 \
+    const PnEmission* em; /* how the face emits */                                                 \
+    PnCentre##S centre;   /* its reference point, in the lanes of `small` */                       \
+    float4 plane;         /* the face's plane (unit normal N in xyz) */                            \
+    T height;             /* N·C */                                                               \
+    M small;              /* lanes where the face is small against its distance */                 \
+  } PnPieceForm##S;                                                                                \
+  inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,         \
+                               T* oz) {                                                            \
+    const PnCentre##S* c = &form->centre;                                                          \
+    T s = form->height / (form->plane.x * px + form->plane.y * py + form->plane.z * pz);           \
+    T x = fma(px, s, -c->x), y = fma(py, s, -c->y), z = fma(pz, s, -c->z);                         \
+    M far = !(x * x + y * y + z * z <= PN_PIECE_FAR * c->norm2);                                   \
+    if (pn_any(far)) {                                                                             \
+      s = sqrt(c->norm2 / (px * px + py * py + pz * pz));                                          \
+      x = select(x, fma(px, s, -c->x), far);                                                       \
+      y = select(y, fma(py, s, -c->y), far);                                                       \
+      z = select(z, fma(pz, s, -c->z), far);                                                       \
+    }                                                                                              \
+    *ox = x;                                                                                       \
+    *oy = y;                                                                                       \
+    *oz = z;                                                                                       \
+  }                                                                                                \
+  /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small  \
+   * lanes only). */                                                                               \
+  inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,       \
+                              T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz) { \
+    T relative = 0.0f;                                                                             \
+    if (pn_any(form->small))                                                                       \
+      relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);   \
+    if (pn_all(form->small)) return relative;                                                      \
+    return select(piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em), relative,     \
+                  form->small);                                                                    \
+  }
+
 #define PN_DEFINE_CONTOUR_TWINS(T, M, S) \
   PN_DEFINE_SIDE_NORMAL(T, M, S)         \
   PN_DEFINE_EDGE_POINT(T, S)             \
@@ -193,7 +253,8 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
   PN_DEFINE_KEEPS_TIED_EDGE(T, M, S)     \
   PN_DEFINE_CLIP_INTERVAL_ID(T, M, S)    \
   PN_DEFINE_CROSSING(T, M, S)            \
-  PN_DEFINE_PIECE_TERM(T, S)
+  PN_DEFINE_PIECE_TERM(T, S)             \
+  PN_DEFINE_PIECE_FORM(T, M, S)
 PN_DEFINE_CONTOUR_TWINS(float, int, 1)   /* one body for the scalar path */
 PN_DEFINE_CONTOUR_TWINS(float8, int8, 8) /* and for eight lanes */
 #undef PN_DEFINE_CONTOUR_TWINS
@@ -205,6 +266,7 @@ PN_DEFINE_CONTOUR_TWINS(float8, int8, 8) /* and for eight lanes */
 #undef PN_DEFINE_CLIP_INTERVAL_ID
 #undef PN_DEFINE_CROSSING
 #undef PN_DEFINE_PIECE_TERM
+#undef PN_DEFINE_PIECE_FORM
 
 /* The scalar path's float3 forms. */
 inline float3 side_normal(float3 a, float3 b) {
@@ -222,16 +284,25 @@ inline float3 edge_point(float3 a, float3 b, float t) {
 }
 
 /* The end of a piece at the crossing of side planes m_self (id `self`) and m_other (`other`),
- * own_point where the crossing is ill-defined. */
+ * own_point where the crossing is ill-defined (*turned 0). */
 #define PN_ID_VERTEX -1 /* a piece end at the edge's own end, or at the horizon */
-inline float3 crossing_point(float3 m_self, int self, float3 m_other, int other, float3 own_point) {
+inline float3 crossing_point(float3 m_self, int self, float3 m_other, int other, float3 own_point,
+                             int* turned) {
   float dx, dy, dz, x = own_point.x, y = own_point.y, z = own_point.z;
   crossing_direction1(m_self.x, m_self.y, m_self.z, self, m_other.x, m_other.y, m_other.z, other,
                       &dx, &dy, &dz);
-  turn_to_point1(dx, dy, dz, 1, &x, &y, &z);
+  *turned = turn_to_point1(dx, dy, dz, 1, &x, &y, &z);
   return (float3)(x, y, z);
 }
 
-inline float piece_term(float3 a, float3 b, float3 n, const PnEmission* em) {
-  return piece_term1(a.x, a.y, a.z, b.x, b.y, b.z, n.x, n.y, n.z, em);
+inline float3 centre_offset(const PnPieceForm1* form, float3 p) {
+  float x, y, z;
+  centre_offset1(form, p.x, p.y, p.z, &x, &y, &z);
+  return (float3)(x, y, z);
+}
+
+inline float form_piece_term(const PnPieceForm1* form, float3 a, float3 b, float3 oa, float3 ob,
+                             float3 n) {
+  return form_piece_term1(form, a.x, a.y, a.z, b.x, b.y, b.z, oa.x, oa.y, oa.z, ob.x, ob.y, ob.z,
+                          n.x, n.y, n.z);
 }

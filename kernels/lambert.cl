@@ -74,30 +74,55 @@ inline float3 vertex_offset(PnSourceFace face, int i, int k, const PnSceneTables
   return (v.hi.xyz - v0.hi.xyz) + (v.lo.xyz - v0.lo.xyz);
 }
 
-/* Whether the face is small against its distance in some lane: the distance from its vertex 0 to
- * its vertex m/2 (the opposite corner of a rectangle, the opposite vertex of a disk's polygon)
- * below PN_SMALL_FACE of vertex 0's distance (x, y, z from P), read from the hi parts: a
- * criterion, not a term, at one more vertex and three products per lane. If so, *lanes says in
- * which lanes (each lane takes its own form, so that a point's E does not depend on the points
- * beside it in its work-item) and *centre is the face's reference point (vertex *k) from each
- * lane's P, with the face's spread about it. */
-inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
-                        float8 x, float8 y, float8 z, PnCentre8* centre, int* k_out, int8* lanes) {
+/* The switch's squared size of a face: the distance from its vertex 0 to its vertex m/2 (the
+ * opposite corner of a rectangle, the opposite vertex of a disk's polygon), from the hi parts: a
+ * criterion, not a term. */
+inline float face_switch_size2(PnSourceFace face, const PnSceneTables* tables) {
   const float4 d = tables->sourceVertices[face.firstVertex + face.vertexCount / 2].hi -
                    tables->sourceVertices[face.firstVertex].hi;
-  const float size2 = dot(d.xyz, d.xyz);
-  *lanes = size2 < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z);
-  if (!pn_any(*lanes)) return false;
-  const int k = face_reference_vertex(face, tables);
-  *k_out = k;
+  return dot(d.xyz, d.xyz);
+}
+
+/* The largest squared offset of a face's vertices from its vertex k (PnCentre's reach2). */
+inline float face_reach2(PnSourceFace face, int k, const PnSceneTables* tables) {
   float reach2 = 0.0f;
   for (int i = 0; i < face.vertexCount; ++i) {
     const float3 o = vertex_offset(face, i, k, tables);
     reach2 = fmax(reach2, dot(o, o));
   }
+  return reach2;
+}
+
+/* Whether the face is small against its distance in some lane: face_switch_size2 below
+ * PN_SMALL_FACE² times vertex 0's squared distance (x, y, z from P), at one more vertex and three
+ * products per lane. If so, *lanes says in which lanes (each lane takes its own form, so that a
+ * point's E does not depend on the points beside it in its work-item) and *centre is the face's
+ * reference point (vertex *k) from each lane's P, with the face's spread about it. */
+inline bool small_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
+                        float8 x, float8 y, float8 z, PnCentre8* centre, int* k_out, int8* lanes) {
+  *lanes =
+      face_switch_size2(face, tables) < PN_SMALL_FACE * PN_SMALL_FACE * (x * x + y * y + z * z);
+  if (!pn_any(*lanes)) return false;
+  const int k = face_reference_vertex(face, tables);
+  *k_out = k;
   float8 cx, cy, cz;
   pn_from8(tables->sourceVertices[face.firstVertex + k], pts, &cx, &cy, &cz);
-  *centre = pn_centre8(cx, cy, cz, (float8)(reach2));
+  *centre = pn_centre8(cx, cy, cz, (float8)(face_reach2(face, k, tables)));
+  return true;
+}
+
+/* small_face8 for one point P (p, p_lo: PnPosition), with the same arithmetic, so that the
+ * scalar penumbra path switches where the lanes do: whether the face is small against its
+ * distance, and if so *centre. */
+inline bool small_face1(float3 p, float3 p_lo, PnSourceFace face, const PnSceneTables* tables,
+                        PnCentre1* centre, int* k_out) {
+  const float3 v0 = pn_from1(tables->sourceVertices[face.firstVertex], p, p_lo);
+  if (!(face_switch_size2(face, tables) < PN_SMALL_FACE * PN_SMALL_FACE * pn_dot(v0, v0)))
+    return false;
+  const int k = face_reference_vertex(face, tables);
+  *k_out = k;
+  const float3 c = pn_from1(tables->sourceVertices[face.firstVertex + k], p, p_lo);
+  *centre = pn_centre1(c.x, c.y, c.z, face_reach2(face, k, tables));
   return true;
 }
 
@@ -255,7 +280,7 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
   if (any_small) {
     e_small = whole_small_face8(pts, face, k, &centre, tables, &em);
-    if (pn_all8(small_lanes)) return e_small;
+    if (pn_all(small_lanes)) return e_small;
   }
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
@@ -311,6 +336,6 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   if (!small_face8(pts, face, tables, ax, ay, az, &small, &k, &small_lanes))
     return horizon_face8(pts, face, tables, 0, 0, &em);
   const float8 e_small = horizon_face8(pts, face, tables, &small, k, &em);
-  if (pn_all8(small_lanes)) return e_small;
+  if (pn_all(small_lanes)) return e_small;
   return select(horizon_face8(pts, face, tables, 0, 0, &em), e_small, small_lanes);
 }

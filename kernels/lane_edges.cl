@@ -110,12 +110,14 @@ inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const E
 }
 
 /* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
- * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. */
+ * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. Where the face is
+ * small, `offsets` (null for an occluder's edge) holds the ends' offsets from the face's centre,
+ * exact in the lanes of offsets->on (contour.cl, PnPieceForm). */
 void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                         float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
                         const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
-                        float8 nx, float8 ny, float8 nz, const PnEmission* em, const Contours8* cs,
-                        PnSum8* acc) {
+                        float8 nx, float8 ny, float8 nz, const PnPieceForm8* form,
+                        const ContourEdge8* offsets, const Contours8* cs, PnSum8* acc) {
   if (!pn_any(on)) return;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -215,7 +217,8 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
     float8 p1x = edge_point8(ax, bx, end), p1y = edge_point8(ay, by, end),
            p1z = edge_point8(az, bz, end);
     const PieceEnd8* start_end = j < 0 ? lo_end : &e1[j];
-    turn_to_point8(start_end->x, start_end->y, start_end->z, start_end->set, &p0x, &p0y, &p0z);
+    const int8 turned0 =
+        turn_to_point8(start_end->x, start_end->y, start_end->z, start_end->set, &p0x, &p0y, &p0z);
     PieceEnd8 stop = *hi_end;
     for (int w = 0; w < nc; ++w) {
       int8 at = valid & (end_at == w);
@@ -225,8 +228,23 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       stop.z = select(stop.z, e0[w].z, at);
       stop.set = select(stop.set, e0[w].set, at);
     }
-    turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
-    float8 term = piece_term8(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, em);
+    const int8 turned1 = turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
+    float8 o0x = 0.0f, o0y = 0.0f, o0z = 0.0f, o1x = 0.0f, o1y = 0.0f, o1z = 0.0f;
+    if (pn_any(form->small)) {
+      centre_offset8(form, p0x, p0y, p0z, &o0x, &o0y, &o0z);
+      centre_offset8(form, p1x, p1y, p1z, &o1x, &o1y, &o1z);
+      if (offsets) {
+        const int8 keep0 = offsets->on & ~turned0, keep1 = offsets->on & ~turned1;
+        o0x = select(o0x, edge_point8(offsets->ax, offsets->bx, st), keep0);
+        o0y = select(o0y, edge_point8(offsets->ay, offsets->by, st), keep0);
+        o0z = select(o0z, edge_point8(offsets->az, offsets->bz, st), keep0);
+        o1x = select(o1x, edge_point8(offsets->ax, offsets->bx, end), keep1);
+        o1y = select(o1y, edge_point8(offsets->ay, offsets->by, end), keep1);
+        o1z = select(o1z, edge_point8(offsets->az, offsets->bz, end), keep1);
+      }
+    }
+    float8 term = form_piece_term8(form, p0x, p0y, p0z, p1x, p1y, p1z, o0x, o0y, o0z, o1x, o1y, o1z,
+                                   nx, ny, nz);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }
 }

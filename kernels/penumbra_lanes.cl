@@ -20,9 +20,16 @@ typedef struct {
   float8 x[PN_VEC_SOURCE], y[PN_VEC_SOURCE], z[PN_VEC_SOURCE], h[PN_VEC_SOURCE];
   EdgePlane8 side[PN_VEC_SOURCE + 1];
   HorizonChord8 chord;
+  /* Where the face is small (form.small): its vertices' and the chord's ends' offsets from
+   * form.centre (contour.cl, PnPieceForm), exact in the lanes of `exact` (those that see the face
+   * itself, not an aperture's rectangle). */
+  float8 ox[PN_VEC_SOURCE], oy[PN_VEC_SOURCE], oz[PN_VEC_SOURCE];
+  HorizonChord8 chord_offset;
+  int8 exact;
   int8 cut;            /* lanes whose horizon cuts the face */
   int m;               /* the face's vertex count */
   PnEmission emission; /* how the face emits (luminance_moments.cl) */
+  PnPieceForm8 form;   /* how its pieces are integrated (contour.cl), reading `emission` */
 } SourcePolygon8;
 
 /* Fills S' for the lanes in `asked` and returns those that see the face: in front of it and not
@@ -34,6 +41,18 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   const int m = face.vertexCount;
   s->m = m;
   s->emission = emission_of(face, tables);
+  s->form.em = &s->emission;
+  float8 x0, y0, z0;
+  int k = 0;
+  pn_from8(tables->sourceVertices[face.firstVertex], pts, &x0, &y0, &z0);
+  const bool small =
+      small_face8(pts, face, tables, x0, y0, z0, &s->form.centre, &k, &s->form.small);
+  s->exact = ~fv->view.use;
+  s->form.plane = face.plane;
+  s->form.height = 0.0f;
+  if (small)
+    s->form.height = face.plane.x * s->form.centre.x + face.plane.y * s->form.centre.y +
+                     face.plane.z * s->form.centre.z;
   for (int i = 0; i < m; ++i) {
     pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &s->x[i], &s->y[i], &s->z[i]);
     if (pn_any(fv->view.use)) {
@@ -44,6 +63,12 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
       s->z[i] = select(s->z[i], cz, fv->view.use);
     }
     s->h[i] = nx * s->x[i] + ny * s->y[i] + nz * s->z[i];
+    if (small) {
+      const float3 o = vertex_offset(face, i, k, tables);
+      s->ox[i] = o.x;
+      s->oy[i] = o.y;
+      s->oz[i] = o.z;
+    }
   }
   float8 rise = 0.0f;
   for (int i = 0; i < m; ++i)
@@ -51,6 +76,7 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   const int8 lanes = asked & in_front8(face, px, py, pz) & (rise > PN_EPS_REL);
   if (!pn_any(lanes)) return lanes;
   chord_begin8(&s->chord);
+  chord_begin8(&s->chord_offset);
   for (int i = 0; i < m; ++i) {
     int j = i + 1 == m ? 0 : i + 1;
     EdgePlane8* side = &s->side[i];
@@ -61,6 +87,9 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
     float8 cx = edge_point8(s->x[i], s->x[j], t), cy = edge_point8(s->y[i], s->y[j], t),
            cz = edge_point8(s->z[i], s->z[j], t);
     chord_track8(&s->chord, a_in, b_in, cx, cy, cz);
+    if (small)
+      chord_track8(&s->chord_offset, a_in, b_in, edge_point8(s->ox[i], s->ox[j], t),
+                   edge_point8(s->oy[i], s->oy[j], t), edge_point8(s->oz[i], s->oz[j], t));
   }
   s->cut = chord_cut8(&s->chord);
   EdgePlane8* chord_side = &s->side[m];
@@ -234,15 +263,20 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
     int8 a_in = s->h[i] >= 0.0f, b_in = s->h[j] >= 0.0f;
     float8 t = s->h[i] / (s->h[i] - s->h[j]);
     float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
+    const ContourEdge8 offsets = {s->ox[i], s->oy[i], s->oz[i], s->ox[j],
+                                  s->oy[j], s->oz[j], s->exact};
     visible_edge_term8(s->x[i], s->y[i], s->z[i], s->x[j], s->y[j], s->z[j], s->side[i].mx,
                        s->side[i].my, s->side[i].mz, i, lo, hi, &none, &none, lanes & (a_in | b_in),
-                       -1, pts->nx, pts->ny, pts->nz, &s->emission, cs, sum);
+                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, cs, sum);
   }
   const HorizonChord8* chord = &s->chord;
+  const HorizonChord8* oc = &s->chord_offset;
+  const ContourEdge8 offsets = {oc->exit_x,  oc->exit_y,  oc->exit_z, oc->entry_x,
+                                oc->entry_y, oc->entry_z, s->exact};
   visible_edge_term8(chord->exit_x, chord->exit_y, chord->exit_z, chord->entry_x, chord->entry_y,
                      chord->entry_z, s->side[m].mx, s->side[m].my, s->side[m].mz, m, (float8)(0.0f),
                      (float8)(1.0f), &none, &none, lanes & s->cut, -1, pts->nx, pts->ny, pts->nz,
-                     &s->emission, cs, sum);
+                     &s->form, &offsets, cs, sum);
 }
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
@@ -289,7 +323,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
                      &lo_end, &hi_end);
       visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
                          PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, pts->nx, pts->ny,
-                         pts->nz, &s->emission, cs, sum);
+                         pts->nz, &s->form, 0, cs, sum);
     }
 }
 

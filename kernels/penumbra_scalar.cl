@@ -14,6 +14,11 @@
 typedef struct {
   float3 source[PN_MAX_SOURCE_POLYGON];      /* S', relative to P */
   float3 source_side[PN_MAX_SOURCE_POLYGON]; /* its unit side normals */
+  /* Where the face is small (form.small): each S' vertex's offset from form.centre (contour.cl,
+   * PnPieceForm), exact (a vertex of the face or an interpolation of two exact ones) or not (to
+   * be taken from the vector from P: centre_offset). */
+  float3 source_offset[PN_MAX_SOURCE_POLYGON];
+  int source_exact[PN_MAX_SOURCE_POLYGON];
   int source_count;
   /* The active occluders' contour edges, hole-oriented, relative to P, with their unit side-plane
    * normals along cross(a, b) (zero where P is on the edge's line: no plane), extracted once per
@@ -23,23 +28,42 @@ typedef struct {
   int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
   int active_count;
   PnEmission emission; /* how the face emits (luminance_moments.cl) */
+  PnPieceForm1 form;   /* how its pieces are integrated (contour.cl), reading `emission` */
 } PenumbraState;
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
 void clip_source(PenumbraState* st, float3 keep) {
-  float3 out[PN_MAX_SOURCE_POLYGON];
+  float3 out[PN_MAX_SOURCE_POLYGON], out_offset[PN_MAX_SOURCE_POLYGON];
+  int out_exact[PN_MAX_SOURCE_POLYGON];
   int count = 0;
-  float3 a = st->source[st->source_count - 1];
+  int last = st->source_count - 1;
+  float3 a = st->source[last];
   float ha = dot(keep, a);
   for (int i = 0; i < st->source_count; ++i) {
     float3 b = st->source[i];
     float hb = dot(keep, b);
-    if ((ha >= 0.0f) != (hb >= 0.0f)) out[count++] = a + (ha / (ha - hb)) * (b - a);
-    if (hb >= 0.0f) out[count++] = b;
+    if ((ha >= 0.0f) != (hb >= 0.0f)) {
+      const float t = ha / (ha - hb);
+      out[count] = a + t * (b - a);
+      out_exact[count] = st->source_exact[last] && st->source_exact[i];
+      out_offset[count] =
+          st->source_offset[last] + t * (st->source_offset[i] - st->source_offset[last]);
+      ++count;
+    }
+    if (hb >= 0.0f) {
+      out[count] = b;
+      out_exact[count] = st->source_exact[i];
+      out_offset[count++] = st->source_offset[i];
+    }
     a = b;
     ha = hb;
+    last = i;
   }
-  for (int i = 0; i < count; ++i) st->source[i] = out[i];
+  for (int i = 0; i < count; ++i) {
+    st->source[i] = out[i];
+    st->source_offset[i] = out_offset[i];
+    st->source_exact[i] = out_exact[i];
+  }
   st->source_count = count;
 }
 
@@ -126,9 +150,11 @@ inline float3 plane_of(const PenumbraState* st, int id) {
 }
 
 /* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source),
- * whose side plane has id `self` (its unit normal is plane_of(st, self)). */
-void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const PenumbraState* st,
-                       int* error, PnSum* acc) {
+ * whose side plane has id `self` (its unit normal is plane_of(st, self)). Where the face is small,
+ * oa and ob are its ends' offsets from the face's centre when `exact` (source_offset), else
+ * unused. */
+void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int owner, int self,
+                       float3 n, const PenumbraState* st, int* error, PnSum* acc) {
   const float3 m_self = plane_of(st, self);
   if (no_plane(m_self)) return; /* its line passes through P: no solid angle */
   float lo[PN_MAX_VISIBLE_PIECES], hi[PN_MAX_VISIBLE_PIECES];
@@ -221,11 +247,17 @@ void visible_edge_term(float3 a, float3 b, int owner, int self, float3 n, const 
 
   for (int k = 0; k < pieces; ++k) {
     float3 p0 = edge_point(a, b, lo[k]), p1 = edge_point(a, b, hi[k]);
+    int turned0 = 0, turned1 = 0;
     if (lo_id[k] != PN_ID_VERTEX)
-      p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0);
+      p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0, &turned0);
     if (hi_id[k] != PN_ID_VERTEX)
-      p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1);
-    pn_sum_add(acc, piece_term(p0, p1, n, &st->emission));
+      p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1, &turned1);
+    float3 o0 = 0.0f, o1 = 0.0f;
+    if (st->form.small) {
+      o0 = exact && !turned0 ? edge_point(oa, ob, lo[k]) : centre_offset(&st->form, p0);
+      o1 = exact && !turned1 ? edge_point(oa, ob, hi[k]) : centre_offset(&st->form, p1);
+    }
+    pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n));
   }
 }
 
@@ -235,13 +267,15 @@ float region_sum(PenumbraState* st, float3 n, int* error) {
     st->source_side[i] =
         side_normal(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1]);
   PnSum sum = {0.0f, 0.0f};
-  for (int i = 0; i < st->source_count; ++i)
-    visible_edge_term(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1], -1, i, n,
-                      st, error, &sum);
+  for (int i = 0; i < st->source_count; ++i) {
+    const int j = i + 1 == st->source_count ? 0 : i + 1;
+    visible_edge_term(st->source[i], st->source[j], st->source_offset[i], st->source_offset[j],
+                      st->source_exact[i] && st->source_exact[j], -1, i, n, st, error, &sum);
+  }
   for (int u = 0; u < st->active_count; ++u)
     for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
-      visible_edge_term(st->contour_a[e], st->contour_b[e], u, PN_ID_CONTOUR + e, n, st, error,
-                        &sum);
+      visible_edge_term(st->contour_a[e], st->contour_b[e], 0.0f, 0.0f, false, u, PN_ID_CONTOUR + e,
+                        n, st, error, &sum);
   return sum.s + sum.c;
 }
 
@@ -251,15 +285,24 @@ float region_sum(PenumbraState* st, float3 n, int* error) {
  * rule holds for any convex region) and the pieces' shared sides cancel in the sum. */
 float wedge_pieces_sum(PenumbraState* st, float3 n, const float3 (*wedge)[PN_MAX_WEDGE_FACES],
                        const int* wedge_faces, int wedges, int* error) {
-  float3 base[PN_MAX_SOURCE_POLYGON];
+  float3 base[PN_MAX_SOURCE_POLYGON], base_offset[PN_MAX_SOURCE_POLYGON];
+  int base_exact[PN_MAX_SOURCE_POLYGON];
   const int base_count = st->source_count;
-  for (int i = 0; i < base_count; ++i) base[i] = st->source[i];
+  for (int i = 0; i < base_count; ++i) {
+    base[i] = st->source[i];
+    base_offset[i] = st->source_offset[i];
+    base_exact[i] = st->source_exact[i];
+  }
   int pieces = 1;
   for (int k = 0; k < wedges; ++k) pieces *= wedge_faces[k];
   PnSum sum = {0.0f, 0.0f};
   for (int piece = 0; piece < pieces; ++piece) {
     st->source_count = base_count;
-    for (int i = 0; i < base_count; ++i) st->source[i] = base[i];
+    for (int i = 0; i < base_count; ++i) {
+      st->source[i] = base[i];
+      st->source_offset[i] = base_offset[i];
+      st->source_exact[i] = base_exact[i];
+    }
     int code = piece;
     for (int k = 0; k < wedges && st->source_count >= 3; ++k) {
       const int chosen = code % wedge_faces[k];
@@ -279,22 +322,45 @@ bool source_polygon(PenumbraState* st, float3 p, float3 p_lo, float3 n, PnSource
                     const PnSceneTables* tables, bool aperture, const float3* corners) {
   st->source_count = 0;
   st->emission = emission_of(face, tables);
+  st->form.em = &st->emission;
+  int k = 0;
+  st->form.small = small_face1(p, p_lo, face, tables, &st->form.centre, &k);
+  st->form.plane = face.plane;
+  st->form.height = 0.0f;
+  if (st->form.small)
+    st->form.height =
+        pn_dot(face.plane.xyz, (float3)(st->form.centre.x, st->form.centre.y, st->form.centre.z));
   if (aperture) {
-    for (int i = 0; i < 4; ++i) st->source[i] = corners[i];
+    for (int i = 0; i < 4; ++i) {
+      st->source[i] = corners[i];
+      st->source_offset[i] = 0.0f;
+      st->source_exact[i] = 0; /* offsets from the vectors from P */
+    }
     st->source_count = 4;
     clip_source(st, n);
   } else {
     const int m = face.vertexCount;
     float3 a = pn_from1(tables->sourceVertices[face.firstVertex], p, p_lo);
+    float3 oa = st->form.small ? vertex_offset(face, 0, k, tables) : 0.0f;
     float ha = dot(n, a);
     for (int i = 0; i < m; ++i) {
-      float3 b =
-          pn_from1(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], p, p_lo);
+      const int j = i + 1 == m ? 0 : i + 1;
+      float3 b = pn_from1(tables->sourceVertices[face.firstVertex + j], p, p_lo);
+      float3 ob = st->form.small ? vertex_offset(face, j, k, tables) : 0.0f;
       float hb = dot(n, b);
-      if (ha >= 0.0f) st->source[st->source_count++] = a;
-      if ((ha >= 0.0f) != (hb >= 0.0f))
-        st->source[st->source_count++] = a + (ha / (ha - hb)) * (b - a);
+      if (ha >= 0.0f) {
+        st->source[st->source_count] = a;
+        st->source_offset[st->source_count] = oa;
+        st->source_exact[st->source_count++] = 1;
+      }
+      if ((ha >= 0.0f) != (hb >= 0.0f)) {
+        const float t = ha / (ha - hb);
+        st->source[st->source_count] = a + t * (b - a);
+        st->source_offset[st->source_count] = oa + t * (ob - oa);
+        st->source_exact[st->source_count++] = 1;
+      }
       a = b;
+      oa = ob;
       ha = hb;
     }
   }

@@ -51,8 +51,11 @@ inline bool __attribute__((overloadable)) pn_any(int m) {
 inline bool __attribute__((overloadable)) pn_any(int8 m) {
   return __builtin_reduce_or(m) != 0;
 }
-/* Whether every lane of an eight-lane mask (0 or -1 each) is set. */
-inline bool pn_all8(int8 m) {
+/* Whether every lane of a mask is set (one point: whether it is). */
+inline bool __attribute__((overloadable)) pn_all(int m) {
+  return m != 0;
+}
+inline bool __attribute__((overloadable)) pn_all(int8 m) {
   return __builtin_reduce_and(m) != 0;
 }
 

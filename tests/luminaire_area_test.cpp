@@ -729,5 +729,71 @@ TEST(AreaModelKernel, ALambertianFileEqualsTheKernelsRectSourceOfTheSameFlux) {
   }
 }
 
+// Small openings past the table: the 80 mm narrow downlight (the example file's opening, powers 0
+// and 38) and a 0.1 × 0.05 m Lambertian one, seen from the floor around the table's shadow, where
+// the penumbra is 0.07 to 0.1 m wide. Each arc's term is of the order of the opening's angular
+// size and the terms cancel to E, of its square: the penumbra paths take them relative to the
+// opening's reference vertex where it is small against its distance (kernels/contour.cl,
+// PnPieceForm), as the unoccluded path does. Every path is held to `bound` of the point's
+// unoccluded E against the reference (closed forms in double over the visible opening). Measured
+// on every path: the downlight 9.1e-6, whose high power's parts of each arc are still taken from
+// the arc alone (7.3e-6 at points the table does not shade, on the unoccluded path); the
+// Lambertian opening 2.3e-6, the rounding of the contour's ends' directions (the table's
+// vertices from the point, the side planes' crossings: DistantSource's small panel past a table
+// says why). With each piece's term taken alone: 1.25e-5 and 5.2e-6. The sanitizer build takes
+// every third point.
+
+TEST(AreaModelKernel, SmallOpeningsPastTheTableMatchTheReferenceOnEveryPath) {
+  TempDir dir("luminaire-area");
+  struct Case {
+    const char* name;
+    std::filesystem::path file;
+    double bound;  // of E unoccluded
+  };
+  const Case cases[] = {
+      {"narrow downlight, 0.08 m disk", writeNarrowDownlight(dir, 0.08), 1.2e-5},
+      {"Lambertian, 0.1 x 0.05 m",
+       writeSymmetricIes(dir, "lambertian-100mm.ies", 0.1, 0.05, lambertianCandela), 3e-6},
+  };
+  std::vector<SamplePoint> points;
+  int index = 0;
+  for (double x = 0.1; x < 1.8; x += 0.035)
+    for (double y = -0.2; y < 1.4; y += 0.035)
+      if (index++ % (kSanitizedBuild ? 3 : 1) == 0)
+        points.push_back({Vec3(x, y, 0), Vec3::UnitZ(), -1});
+  for (const Case& c : cases) {
+    Scene scene = roomSolids();
+    scene.luminaires.push_back(
+        placeLuminaire({c.file, Vec3(1.0, 0.5, 3.0), kTurned, 1.0, LuminaireModel::Area}));
+    Scene open;
+    open.luminaires = scene.luminaires;
+    ASSERT_FALSE(scene.luminaires.front().opening->subdivided()) << c.name;
+    const std::vector<double> reference = referenceE(scene, points);
+    const std::vector<double> unoccluded = referenceE(open, points);
+    int penumbra = 0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+      if (reference[i] > 1e-3 * unoccluded[i] && reference[i] < (1 - 1e-3) * unoccluded[i])
+        ++penumbra;
+    EXPECT_GT(penumbra, kSanitizedBuild ? 30 : 100) << c.name;
+    for (const KernelPath& path : kKernelPaths) {
+      const std::vector<double> kernel = kernelE(scene, points, path.options);
+      double worst = 0.0, worstShaded = 0.0;
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        ASSERT_GT(unoccluded[i], 0.0) << points[i].position.transpose();
+        const double error = std::abs(kernel[i] - reference[i]) / unoccluded[i];
+        worst = std::max(worst, error);
+        if (reference[i] < (1 - 1e-3) * unoccluded[i]) worstShaded = std::max(worstShaded, error);
+        EXPECT_LE(error, c.bound) << c.name << ", " << path.name << " at "
+                                  << points[i].position.transpose() << ": E = " << kernel[i]
+                                  << " lx, reference " << reference[i] << " lx";
+      }
+      std::printf(
+          "  %s, %s path: %zu points (%d in the penumbra), largest |kernel − reference| %.2e of "
+          "E unoccluded (%.2e where shaded)\n",
+          c.name, path.name, points.size(), penumbra, worst, worstShaded);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace penumbra
