@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "cl/opencl.hpp"
+#include "memory/page_prefault.hpp"
 
 namespace penumbra::embedded {
 const std::map<std::string, std::string>& kernelSources();  // generated at build time
@@ -51,6 +52,20 @@ DeviceBuffer DeviceBuffer::allocate(Device& device, std::size_t bytes) {
         cl::Buffer(device.impl().context, CL_MEM_READ_WRITE, std::max<std::size_t>(bytes, 16));
   } catch (const cl::Error& error) {
     throw std::runtime_error(fmt::format("allocating {} bytes: {}", bytes, describe(error)));
+  }
+  // On a CPU device the buffer is host memory (PoCL maps it without a copy): its pages are
+  // mapped at once (memory/page_prefault.hpp) rather than faulted in by the first upload or
+  // launch. Nothing is written; a runtime that maps through a copy only pays the copy's pages.
+  if (device.info().type == "cpu" && bytes >= kPopulateMinBytes) {
+    try {
+      cl::CommandQueue& queue = device.impl().queue;
+      void* host = queue.enqueueMapBuffer(result.impl_->buffer, CL_TRUE,
+                                          CL_MAP_WRITE_INVALIDATE_REGION, 0, bytes);
+      populatePages(host, bytes);
+      queue.enqueueUnmapMemObject(result.impl_->buffer, host);
+    } catch (const cl::Error&) {
+      // Mapping is an optimisation only: the first use faults the pages in instead.
+    }
   }
   return result;
 }

@@ -14,6 +14,7 @@
 #include "engine/luminaire_engine.hpp"
 #include "engine/patch_table.hpp"
 #include "geometry/morton_order.hpp"
+#include "memory/page_prefault.hpp"
 #include "shadow/scene_shadows.hpp"
 
 namespace penumbra {
@@ -402,7 +403,7 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
 
   KernelOutput output;
   output.padded = padded;
-  output.illuminance.resize(outValues);
+  resizePopulated(output.illuminance, outValues);  // per source: up to hundreds of MB
   out.download(output.illuminance.data(), outValues * sizeof(float));
   std::vector<cl_int> errorBits(workItems);
   errors.download(errorBits.data(), workItems * sizeof(cl_int));

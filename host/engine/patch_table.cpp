@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "memory/page_prefault.hpp"
 #include "shadow/receiver_candidates.hpp"
 
 namespace penumbra {
@@ -165,7 +166,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
                            std::size_t workItems, bool culling, double margin) {
   const std::size_t faceCount = shadows.faces.size();
   PatchTable table;
-  table.entries.resize(workItems * faceCount);
+  resizePopulated(table.entries, workItems * faceCount);
   if (!culling) {
     for (std::size_t k = 0; k < table.entries.size(); ++k)
       table.entries[k] =
@@ -258,7 +259,7 @@ PatchTable buildLinkPatchTable(const SceneShadows& shadows, std::span<const Face
                                const FaceLinks& links, bool culling, double margin) {
   const std::size_t workItems = links.start.size() - 1;
   PatchTable table;
-  table.entries.resize(links.faces.size());
+  resizePopulated(table.entries, links.faces.size());
   if (!culling) {
     for (PnPatchFace& e : table.entries) e = PnPatchFace{0, -1, PN_CLASS_B, 0};
     return table;
