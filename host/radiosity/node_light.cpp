@@ -14,12 +14,6 @@ namespace penumbra {
 
 namespace {
 
-// Values per node and light group evaluated at once (2^22 doubles, 32 MB, about five times that
-// inside the engine while it evaluates them), and those kept from the first pass over the chunks
-// for the second (2^25, 256 MB); the chunks past those are evaluated again in the second pass.
-constexpr std::size_t kChunkGroupValues = std::size_t{1} << 22;
-constexpr std::size_t kKeptGroupValues = std::size_t{1} << 25;
-
 struct LightGroups {
   std::vector<Eigen::Vector3d> channel;  // per source: its colour over the colour's luminance
   std::size_t sources = 0;
@@ -67,15 +61,15 @@ std::vector<double> groupLightOfRange(IlluminanceEngine& engine, const Scene& sc
   return byGroup;
 }
 
-// The mesh's elements in chunks whose nodes × `groups` values stay within kChunkGroupValues
-// (one element at least).
-std::vector<ElementRange> elementChunks(const SurfaceMesh& mesh, std::size_t groups) {
+// The mesh's elements in chunks whose nodes × `groups` values stay within `values` (one element
+// at least).
+std::vector<ElementRange> elementChunks(const SurfaceMesh& mesh, std::size_t groups,
+                                        std::size_t values) {
   std::vector<ElementRange> chunks;
   const std::size_t n = mesh.elements.size();
   for (std::size_t first = 0; first < n;) {
     std::size_t last = first + 1;
-    while (last < n &&
-           (mesh.nodeStart[last + 1] - mesh.nodeStart[first]) * groups <= kChunkGroupValues)
+    while (last < n && (mesh.nodeStart[last + 1] - mesh.nodeStart[first]) * groups <= values)
       ++last;
     chunks.push_back(ElementRange{first, last});
     first = last;
@@ -86,7 +80,7 @@ std::vector<ElementRange> elementChunks(const SurfaceMesh& mesh, std::size_t gro
 }  // namespace
 
 NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh,
-                    const HostLight& host) {
+                    const HostLight& host, const NodeLightChunks& sizes) {
   // The sources as the engine reports them: the scene's, then its sky's and ground's (white).
   const std::vector<Source> all = daylightScene(scene, 0.0).sources;
   LightGroups groups;
@@ -102,7 +96,7 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
 
   // First pass: the direct light, and each group's flux onto the elements (element by element in
   // mesh order, whatever the chunks).
-  const std::vector<ElementRange> chunks = elementChunks(mesh, count);
+  const std::vector<ElementRange> chunks = elementChunks(mesh, count, sizes.chunkValues);
   std::vector<std::vector<double>> kept;
   std::size_t keptValues = 0;
   std::vector<double> flux(count, 0.0), average(count);
@@ -119,7 +113,7 @@ NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const Surface
     }
     // The chunks kept are the first ones, up to the first that does not fit.
     if (kept.size() == static_cast<std::size_t>(&range - chunks.data()) &&
-        keptValues + byGroup.size() <= kKeptGroupValues) {
+        keptValues + byGroup.size() <= sizes.keptValues) {
       keptValues += byGroup.size();
       kept.push_back(std::move(byGroup));
     }

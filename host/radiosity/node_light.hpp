@@ -32,8 +32,18 @@ struct NodeLight {
   double litGroups = 0.0;  // the groups whose flux onto the elements is above 0
 };
 
+// How many values per node and light group (doubles) are held at once: those of one chunk of
+// elements evaluated together (one element at least), and those of the first chunks kept from
+// the first pass for the second (the groups' fluxes are known only after the first pass; the
+// chunks past these are evaluated again). The defaults: 32 MB per chunk, about five times that
+// inside the engine while it evaluates one, and 256 MB kept.
+struct NodeLightChunks {
+  std::size_t chunkValues = std::size_t{1} << 22;
+  std::size_t keptValues = std::size_t{1} << 25;
+};
+
 NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh,
-                    const HostLight& host);
+                    const HostLight& host, const NodeLightChunks& chunks = {});
 
 // Elements where the direct light is uneven: an element is split when (max − min) of
 // NodeLight::balanced over its nodes, times its area, exceeds `fraction` times the number of lit
