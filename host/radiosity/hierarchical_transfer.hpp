@@ -67,7 +67,8 @@ class HierarchicalTransfer {
   const ElementTree* tree_;
   HierarchyOptions options_;
   double tolerance_;
-  Scene nodeScene_;  // every tree node as a source of 1 cd/m²
+  std::vector<Plane> planes_;  // each tree node's plane
+  Scene nodeScene_;            // every tree node as a source of 1 cd/m²
   std::unique_ptr<IlluminanceEngine> engine_;
   NodeLinks links_;
 };

@@ -6,8 +6,6 @@
 #include <stdexcept>
 #include <utility>
 
-#include <fmt/format.h>
-
 #include "geometry/fnv1a_hash.hpp"
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_transfer.hpp"
@@ -67,21 +65,18 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
   // the sky face, cut below the scene).
   mesh_ = buildSurfaceMesh(skyFacesScene(scene), mesh);
+  if (mesh_.elements.size() > mesh.maxElements) {
+    // More elements than the dense transfer takes before any refinement: hierarchical links at
+    // the default bound, which have no element limit.
+    const std::size_t denseElements = mesh_.elements.size();
+    MeshOptions linked = mesh;
+    linked.linkError = MeshOptions::kDefaultLinkError;
+    solveHierarchically(device, scene, direct, linked, engine, cache, host);
+    report_.denseElements = denseElements;
+    return;
+  }
   NodeLight light = nodeLight(direct, scene, mesh_, host);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
-  if (mesh_.elements.size() > mesh.maxElements) {
-    // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
-    const double fits = std::ceil(20.0 * mesh.elementSize *
-                                  std::sqrt(static_cast<double>(mesh_.elements.size()) /
-                                            static_cast<double>(mesh.maxElements))) /
-                        20.0;
-    throw std::runtime_error(fmt::format(
-        "interreflection: {} elements at --element-size {} m, more than the {} the dense "
-        "solver takes; use --element-size {} or larger, --link-error {} (hierarchical links, "
-        "no element limit), or --direct-only",
-        mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits,
-        MeshOptions::kDefaultLinkError));
-  }
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     const std::vector<char> split =
         unevenElements(mesh_, light, mesh.refinement, mesh.maxElements, report_.refinementCapped);
@@ -164,6 +159,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
     if (cache) cache->insert(key, geometry_);
   }
   report_.links = geometry_->links->links().source.size();
+  report_.linkError = mesh.linkError;
 
   start = Clock::now();
   const HierarchicalSolution solved = solveHierarchical(*geometry_->links, direct_);
