@@ -152,13 +152,13 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
   }
 
   nodeScene_ = elementScene(scene, allNodes(tree));
-  // Each node shares the shadow casters of its highest ancestor that can be linked (no larger
-  // than largestLinkedNode): the casters are built per such node, a few per piece, rather than
-  // per node (EmittingFaceShadows::casterOwner says why that stays exact).
+  // Each node shares the shadow casters of its highest ancestor no larger than
+  // largestCasterOwner: the casters are built per such node, a few per piece, rather than per
+  // node (EmittingFaceShadows::casterOwner says why that stays exact).
   for (std::size_t i = 0; i < n && options_.shareCasters; ++i) {
     int owner = static_cast<int>(i);
     for (int up = tree.nodes[i].parent;
-         up >= 0 && tree.nodes[up].size <= options_.largestLinkedNode; up = tree.nodes[up].parent)
+         up >= 0 && tree.nodes[up].size <= options_.largestCasterOwner; up = tree.nodes[up].parent)
       owner = up;
     if (owner != static_cast<int>(i)) nodeScene_.sources[i].castersOf = owner;
   }
