@@ -37,8 +37,8 @@ struct MeshOptions {
   // share their shadow casters in the dense transfer (elementSceneSharingCasters): the casters
   // are built per block, not per element (a room of hundreds of solids and thousands of
   // elements would hold millions of shadow volumes), and a block's volumes hold its elements'
-  // (EmittingFaceShadows::casterOwner), so they only cull less tightly. 2 m: the largest source
-  // a link of the hierarchical transfer takes (HierarchyOptions::largestCasterOwner).
+  // (EmittingFaceShadows::casterOwner), so they only cull less tightly. 2 m: the size of the
+  // hierarchical transfer's caster owners (HierarchyOptions::largestCasterOwner).
   double casterBlockSize = 2.0;
   // The transfer: 0 the dense element-to-element matrix; above 0 hierarchical links whose
   // estimated error is at most this (HierarchyOptions::linkError), with no element limit.
