@@ -359,13 +359,16 @@ TEST(Interreflection, DenseMeshesStayWithinTheLimitAndLinksTakeOverPastIt) {
   EXPECT_GT(capped.report().elements, base);
 
   // Past the limit before any refinement: hierarchical links at the default bound take over,
-  // the same solution as when they are asked for.
-  options.maxElements = base - 1;
+  // the same solution as when they are asked for (1 m elements: the same rule, less work).
+  options.elementSize = 1.0;
+  const std::size_t coarse = buildSurfaceMesh(scene, options).elements.size();
+  options.maxElements = coarse - 1;
   const Interreflection switched(cpuDevice(), scene, direct, options);
-  EXPECT_EQ(switched.report().denseElements, base);
+  EXPECT_EQ(switched.report().denseElements, coarse);
   EXPECT_EQ(switched.report().linkError, MeshOptions::kDefaultLinkError);
   EXPECT_GT(switched.report().links, 0u);
   MeshOptions linked;
+  linked.elementSize = options.elementSize;
   linked.linkError = MeshOptions::kDefaultLinkError;
   const Interreflection asked(cpuDevice(), scene, direct, linked);
   EXPECT_EQ(asked.report().denseElements, 0u);
