@@ -2,8 +2,12 @@
 // 0.6 m ceiling panel of 3000 lm per 5 × 5 m bay, every surface ρ = 0.5, elements of 0.5 m, from
 // about 10³ to 10⁵ elements. Each hall is solved in a child process of its own, so that its peak
 // memory is its own; the bench prints elements, links, seconds per phase, the peak memory and
-// the slopes of time and memory against the element count between successive halls, and the
-// same halls' dense transfer where it fits (MeshOptions::maxElements).
+// the slopes of the total time, of the transfer's time and of the memory against the element
+// count between successive halls, and the same halls' dense transfer where it fits
+// (MeshOptions::maxElements). The mesh phase includes the direct light at every quadrature node
+// from every panel, nodes × panels kernel evaluations: the panels grow with the floor, so that
+// part grows with the square of the element count, as the direct light on any grid of the hall
+// would.
 //   usage: hierarchy_bench [--sides 10,20,40,70,110] [--link-error 2e-3] [--device cpu|gpu|N]
 // Run from the repository root; POCL_MAX_PTHREAD_COUNT=2 pins PoCL to two threads.
 #include <fmt/format.h>
@@ -108,17 +112,19 @@ std::vector<double> parseList(const std::string& text) {
 void printRows(const std::string& title, const std::vector<HallResult>& rows,
                const std::vector<std::string>& labels) {
   fmt::print("\n{}\n", title);
-  fmt::print("{:>8} {:>9} {:>11} {:>8} {:>11} {:>8} {:>8} {:>10} {:>11} {:>12}\n", "scene",
+  fmt::print("{:>8} {:>9} {:>11} {:>8} {:>11} {:>8} {:>8} {:>10} {:>11} {:>14} {:>12}\n", "scene",
              "elements", "links", "mesh [s]", "transfer [s]", "solve [s]", "total [s]", "peak [MB]",
-             "time slope", "memory slope");
+             "time slope", "transfer slope", "memory slope");
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const HallResult& r = rows[i];
-    std::string slopes = fmt::format("{:>11} {:>12}", "-", "-");
+    std::string slopes = fmt::format("{:>11} {:>14} {:>12}", "-", "-", "-");
     if (i > 0 && rows[i - 1].elements > 0 && r.elements > rows[i - 1].elements) {
-      const double n = std::log(r.elements / rows[i - 1].elements);
-      slopes = fmt::format("{:>11.2f} {:>12.2f}",
-                           std::log(r.totalSeconds / rows[i - 1].totalSeconds) / n,
-                           std::log(r.peakMegabytes / rows[i - 1].peakMegabytes) / n);
+      const HallResult& before = rows[i - 1];
+      const double n = std::log(r.elements / before.elements);
+      slopes = fmt::format("{:>11.2f} {:>14.2f} {:>12.2f}",
+                           std::log(r.totalSeconds / before.totalSeconds) / n,
+                           std::log(r.transferSeconds / before.transferSeconds) / n,
+                           std::log(r.peakMegabytes / before.peakMegabytes) / n);
     }
     fmt::print("{:>8} {:>9.0f} {:>11.0f} {:>8.2f} {:>11.2f} {:>8.3f} {:>8.2f} {:>10.0f} {}\n",
                labels[i], r.elements, r.links, r.meshSeconds, r.transferSeconds, r.solveSeconds,

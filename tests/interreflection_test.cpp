@@ -342,7 +342,7 @@ TEST(Interreflection, NoSliverElementsWhereAWindowsSlabsMeet) {
   EXPECT_NEAR(floorArea, 12.0, 1e-6 * 12.0);
 }
 
-TEST(Interreflection, MeshesStayWithinTheDenseSolversLimit) {
+TEST(Interreflection, DenseMeshesStayWithinTheLimitAndLinksTakeOverPastIt) {
   TempDir dir("interreflection");
   const Scene scene = closedRoom(dir, "[4, 3, 3]");
   IlluminanceEngine direct(cpuDevice(), scene);
@@ -358,14 +358,24 @@ TEST(Interreflection, MeshesStayWithinTheDenseSolversLimit) {
   EXPECT_LE(capped.report().elements, options.maxElements);
   EXPECT_GT(capped.report().elements, base);
 
-  options.maxElements = base - 1;
-  try {
-    Interreflection refused(cpuDevice(), scene, direct, options);
-    ADD_FAILURE() << "a mesh beyond the limit was accepted";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("use --element-size 0.55 or larger"), std::string::npos)
-        << e.what();
-  }
+  // Past the limit before any refinement: hierarchical links at the default bound take over,
+  // the same solution as when they are asked for (1 m elements: the same rule, less work).
+  options.elementSize = 1.0;
+  const std::size_t coarse = buildSurfaceMesh(scene, options).elements.size();
+  options.maxElements = coarse - 1;
+  const Interreflection switched(cpuDevice(), scene, direct, options);
+  EXPECT_EQ(switched.report().denseElements, coarse);
+  EXPECT_EQ(switched.report().linkError, MeshOptions::kDefaultLinkError);
+  EXPECT_GT(switched.report().links, 0u);
+  MeshOptions linked;
+  linked.elementSize = options.elementSize;
+  linked.linkError = MeshOptions::kDefaultLinkError;
+  const Interreflection asked(cpuDevice(), scene, direct, linked);
+  EXPECT_EQ(asked.report().denseElements, 0u);
+  EXPECT_EQ(switched.report().elements, asked.report().elements);
+  EXPECT_EQ(switched.report().links, asked.report().links);
+  const Eigen::MatrixX3d difference = switched.solution().indirect - asked.solution().indirect;
+  EXPECT_EQ(difference.cwiseAbs().maxCoeff(), 0.0);
 }
 
 // The total through Estimator: ρ = 0 gives the direct E bit for bit, a higher ρ never lowers E,

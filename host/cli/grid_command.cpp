@@ -59,6 +59,16 @@ void warnAboutBlackSolids(const RunReport& report) {
              fmt::join(names, ", "));
 }
 
+// The dense transfer was asked for, but its mesh was past the dense limit: links took over.
+void noteLinksPastDenseLimit(const RunReport& report, const MeshOptions& mesh) {
+  if (!report.interreflection || report.interreflection->denseElements == 0) return;
+  const InterreflectionReport& r = *report.interreflection;
+  fmt::print(stderr,
+             "penumbra: the mesh has {} elements at --element-size {} m, more than the {} the "
+             "dense transfer takes: hierarchical links at --link-error {} instead ({} links)\n",
+             r.denseElements, mesh.elementSize, mesh.maxElements, r.linkError, r.links);
+}
+
 int run(const GridOptions& options) {
   const auto start = Clock::now();
   // Fail on an unusable output path before the long part.
@@ -80,6 +90,7 @@ int run(const GridOptions& options) {
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
     warnAboutBlackSolids(report);
+    noteLinksPastDenseLimit(report, options.estimator.mesh);
   }
 
   // The files are written while the grids are computed (so that no grid is ever held whole), into

@@ -61,8 +61,8 @@ inline void addInterreflectionOptions(CLI::App& command, EstimatorOptions& optio
       .add_option("--link-error", options.mesh.linkError,
                   "Interreflection: the error bound of a hierarchical link, relative to the E of "
                   "a hemisphere of unit luminance; 0 computes every element pair (the dense "
-                  "transfer, limited to 8000 elements) (docs/method.md, \"Hierarchical "
-                  "transfer\")")
+                  "transfer; a mesh of more than 8000 elements takes links at 2e-4 instead) "
+                  "(docs/method.md, \"Hierarchical transfer\")")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <future>
 #include <stdexcept>
 #include <utility>
 
@@ -37,12 +38,13 @@ struct IlluminanceEngine::State {
   // Built at the first scene with luminaires, kept for later ones (a sweep's cases).
   std::unique_ptr<LuminaireEngine> luminaires;
   bool hasLuminaires = false;
-  // The buffers of a launch, kept from one launch to the next (DeviceBuffer::reserve): a grid's
-  // batches have one size, so every batch after the first reuses the first one's memory.
+  // The device buffers of a launch, kept from one launch to the next (DeviceBuffer::reserve): a
+  // grid's batches have one size, so every batch after the first reuses the first one's memory.
   static constexpr int kPointArrays = 9;  // the position's hi and lo parts, the normal
+  // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
+  // KernelLaunch::run for why the work-group size is fixed).
+  static constexpr std::size_t kWorkGroup = 16;
   struct LaunchBuffers {
-    std::vector<float> coords[kPointArrays];  // host side, one float8 lane per point
-    std::vector<cl_int> own;
     DeviceBuffer points[kPointArrays], pointSolids, patchFaces, candidates, illuminance, errors,
         classes;
   } launchBuffers;
@@ -58,6 +60,7 @@ struct IlluminanceEngine::State {
     // the kernel reads the packed copy, the patch tables the flattened volumes.
     packed = packSceneFrame(scene);
     volumes.clear();
+
     const Tolerance tolerance = Tolerance::forSceneSize(scene.size());
     shadows = buildSceneShadows(scene, [&](EmittingFaceShadows& face) {
       packFace(packed, scene, face, tolerance);
@@ -246,60 +249,107 @@ std::vector<float> IlluminanceEngine::linkedIlluminance(std::span<const SamplePo
   return launch(points, false, false, &linked).illuminance;
 }
 
+struct IlluminanceEngine::PreparedLaunch {
+  std::span<const SamplePoint> points;
+  bool bySource = false, withClasses = false;
+  const LinkedLaunch* linked = nullptr;
+  std::size_t workItems = 0, padded = 0;
+  // Structure of arrays, one float8 lane per point: the position's hi parts, its lo parts
+  // (toPosition), the normal. Padding repeats the last point.
+  std::vector<float> coords[State::kPointArrays];
+  std::vector<cl_int> own;
+  std::vector<cl_int> linkStart, receiver;  // a linked launch's, padded to the work-items
+  PatchTable table;
+};
+
 IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const SamplePoint> points,
                                                           bool bySource, bool withClasses,
                                                           const LinkedLaunch* linked) {
-  const int sourceCount = state_->packed.sourceCount;
+  PreparedLaunch prepared = prepare(points, bySource, withClasses, linked);
+  return run(prepared);
+}
+
+void IlluminanceEngine::illuminanceBySourceBatches(
+    std::span<const std::span<const SamplePoint>> batches, const BatchValues& consume) {
+  const auto prepareBatch = [this, batches](std::size_t b) {
+    return prepare(batches[b], true, false, nullptr);
+  };
+  std::future<PreparedLaunch> next;
+  if (!batches.empty()) next = std::async(std::launch::async, prepareBatch, std::size_t{0});
+  for (std::size_t b = 0; b < batches.size(); ++b) {
+    PreparedLaunch current = next.get();
+    if (b + 1 < batches.size()) next = std::async(std::launch::async, prepareBatch, b + 1);
+    if (batches[b].empty()) {
+      consume(b, {}, 0);
+      continue;
+    }
+    const KernelOutput output = run(current);
+    consume(b, output.illuminance, output.padded);
+  }
+}
+
+IlluminanceEngine::PreparedLaunch IlluminanceEngine::prepare(std::span<const SamplePoint> points,
+                                                             bool bySource, bool withClasses,
+                                                             const LinkedLaunch* linked) const {
+  PreparedLaunch p;
+  p.points = points;
+  p.bySource = bySource;
+  p.withClasses = withClasses;
+  p.linked = linked;
   const std::size_t n = points.size();
-  // Work-items of PN_LANES points, in work-groups of kWorkGroup work-items (see
-  // KernelLaunch::run for why the work-group size is fixed).
-  constexpr std::size_t kWorkGroup = 16;
-  const std::size_t workItems =
-      (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
-  const std::size_t padded = workItems * PN_LANES;
+  if (n == 0) return p;
+  constexpr std::size_t kWorkGroup = State::kWorkGroup;
+  p.workItems = (n + PN_LANES * kWorkGroup - 1) / (PN_LANES * kWorkGroup) * kWorkGroup;
+  p.padded = p.workItems * PN_LANES;
   // A linked launch's work-items past the caller's have no links.
-  std::vector<cl_int> linkStart, receiver;
   if (linked) {
-    linkStart.assign(linked->start.begin(), linked->start.end());
-    linkStart.resize(workItems + 1, linked->start.back());
+    p.linkStart.assign(linked->start.begin(), linked->start.end());
+    p.linkStart.resize(p.workItems + 1, linked->start.back());
     if (!linked->receiver.empty()) {
-      receiver.assign(linked->receiver.begin(), linked->receiver.end());
-      receiver.resize(workItems, -1);
+      p.receiver.assign(linked->receiver.begin(), linked->receiver.end());
+      p.receiver.resize(p.workItems, -1);
     }
   }
-  const std::size_t links = linked ? linked->faces.size() : 0;
-  // Structure of arrays, one float8 lane per point: the position's hi parts, its lo parts
-  // (toPosition), the normal. Padding repeats the last point.
-  constexpr int kPointArrays = State::kPointArrays;
-  State::LaunchBuffers& kept = state_->launchBuffers;
-  std::vector<float>(&coords)[kPointArrays] = kept.coords;
-  for (auto& c : coords) c.resize(padded);
-  std::vector<cl_int>& own = kept.own;
-  own.resize(padded);
+  for (auto& c : p.coords) c.resize(p.padded);
+  p.own.resize(p.padded);
   const Vec3& origin = state_->packed.origin;  // the kernel's positions are relative to it
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, padded, 4096),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, p.padded, 4096),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for (std::size_t i = range.begin(); i != range.end(); ++i) {
-                        const SamplePoint& p = points[std::min(i, n - 1)];
-                        const PnPosition position = toPosition(p.position, origin);
+                        const SamplePoint& point = points[std::min(i, n - 1)];
+                        const PnPosition position = toPosition(point.position, origin);
                         for (int k = 0; k < 3; ++k) {
-                          coords[k][i] = position.hi.s[k];
-                          coords[3 + k][i] = position.lo.s[k];
-                          coords[6 + k][i] = static_cast<float>(p.normal[k]);
+                          p.coords[k][i] = position.hi.s[k];
+                          p.coords[3 + k][i] = position.lo.s[k];
+                          p.coords[6 + k][i] = static_cast<float>(point.normal[k]);
                         }
-                        own[i] = p.solid;
+                        p.own[i] = point.solid;
                       }
                     });
   // The volumes are grown by twice the kernel's tolerance at these points: the kernel tests
   // points against them within its tolerance, in float.
   const double margin = 2.0 * kernelLengthAt(state_->packed, points);
-  const PatchTable table =
-      linked ? buildLinkPatchTable(state_->shadows, state_->volumes, state_->packed, points,
-                                   FaceLinks{linkStart, linked->faces, receiver},
-                                   state_->options.culling, margin)
-             : buildPatchTable(state_->shadows, state_->volumes, state_->packed, points, workItems,
-                               state_->options.culling, margin);
+  p.table = linked ? buildLinkPatchTable(state_->shadows, state_->volumes, state_->packed, points,
+                                         FaceLinks{p.linkStart, linked->faces, p.receiver},
+                                         state_->options.culling, margin)
+                   : buildPatchTable(state_->shadows, state_->volumes, state_->packed, points,
+                                     p.workItems, state_->options.culling, margin);
+  return p;
+}
 
+IlluminanceEngine::KernelOutput IlluminanceEngine::run(PreparedLaunch& prepared) {
+  const std::span<const SamplePoint> points = prepared.points;
+  const bool bySource = prepared.bySource, withClasses = prepared.withClasses;
+  const LinkedLaunch* linked = prepared.linked;
+  const int sourceCount = state_->packed.sourceCount;
+  const std::size_t n = points.size();
+  const std::size_t workItems = prepared.workItems, padded = prepared.padded;
+  const std::vector<cl_int>& linkStart = prepared.linkStart;
+  const PatchTable& table = prepared.table;
+  const std::size_t links = linked ? linked->faces.size() : 0;
+  constexpr int kPointArrays = State::kPointArrays;
+  constexpr std::size_t kWorkGroup = State::kWorkGroup;
+  State::LaunchBuffers& kept = state_->launchBuffers;
   compute::Device& d = *state_->device;
   const std::size_t outValues = linked     ? links * PN_LANES
                                 : bySource ? padded * std::max(sourceCount, 1)
@@ -342,9 +392,9 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
   }
   DeviceBuffer(&pointBuffers)[kPointArrays] = kept.points;
   for (int k = 0; k < kPointArrays; ++k)
-    DeviceBuffer::uploadInto<float>(d, pointBuffers[k], coords[k]);
+    DeviceBuffer::uploadInto<float>(d, pointBuffers[k], prepared.coords[k]);
   DeviceBuffer& ownBuffer = kept.pointSolids;
-  DeviceBuffer::uploadInto<cl_int>(d, ownBuffer, own);
+  DeviceBuffer::uploadInto<cl_int>(d, ownBuffer, prepared.own);
   DeviceBuffer& patchBuffer = kept.patchFaces;
   DeviceBuffer::uploadInto<PnPatchFace>(d, patchBuffer, table.entries);
   DeviceBuffer& candidateBuffer = kept.candidates;

@@ -3,6 +3,7 @@
 // the photometric luminaires by LuminaireEngine (the point model by kernels/luminaire.cl, the area
 // model's openings by kernels/illuminance.cl in a scene of their own).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -55,6 +56,14 @@ class IlluminanceEngine {
   // interreflection's element-to-element transfer reads, where per-source values are the
   // whole output and copying them would cost more than computing them.
   std::vector<float> illuminanceBySource(std::span<const SamplePoint> points, std::size_t& stride);
+  // illuminanceBySource for each of `batches` in turn, handed to `consume` in order with the
+  // batch's index: the same values as one call per batch. The host's part of the next batch
+  // (its patch table) is built on a second thread while the kernel computes this one, so that
+  // the tail of either leaves no core idle.
+  using BatchValues =
+      std::function<void(std::size_t batch, const std::vector<float>& values, std::size_t stride)>;
+  void illuminanceBySourceBatches(std::span<const std::span<const SamplePoint>> batches,
+                                  const BatchValues& consume);
   // E from single source faces at groups of PN_LANES points (links): the points are work-items of
   // PN_LANES in order (the caller pads each group as it likes), and work-item w takes the faces
   // faces[k], k in [start[w], start[w + 1]) (start: one entry per work-item and one more, ending
@@ -87,6 +96,13 @@ class IlluminanceEngine {
   };
   KernelOutput launch(std::span<const SamplePoint> points, bool bySource, bool withClasses,
                       const LinkedLaunch* linked = nullptr);
+  // A launch's host part (the points packed for the kernel and their patch table), which reads
+  // the scene only and may run beside another launch's run(); and the rest (upload, kernel,
+  // download). launch() is run(prepare(...)).
+  struct PreparedLaunch;
+  PreparedLaunch prepare(std::span<const SamplePoint> points, bool bySource, bool withClasses,
+                         const LinkedLaunch* linked) const;
+  KernelOutput run(PreparedLaunch& prepared);
 
   // What a call asks for beyond E: E per source, the shadow classes (illuminance() asks for
   // neither, and skips downloading and reordering the classes).

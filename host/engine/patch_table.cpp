@@ -161,6 +161,35 @@ FaceVolumes flattenVolumes(const EmittingFaceShadows& face) {
   return v;
 }
 
+namespace {
+
+// The emitting faces grouped by the caster face whose volumes they read
+// (EmittingFaceShadows::casterFace): the elements of one caster block share its casters, so for
+// a box the candidates and the umbra test are the same for every face of a group and are found
+// once. Groups in the order of their first face, faces in increasing order.
+struct CasterGroups {
+  std::vector<std::size_t> volumesOf;             // group → its caster face
+  std::vector<std::vector<std::size_t>> members;  // group → its emitting faces
+};
+
+CasterGroups casterGroups(const SceneShadows& shadows) {
+  CasterGroups groups;
+  std::vector<int> groupOf(shadows.faces.size(), -1);  // caster face → group
+  for (std::size_t f = 0; f < shadows.faces.size(); ++f) {
+    if (!shadows.faces[f].emits) continue;
+    const std::size_t c = shadows.faces[f].casterFace(f);
+    if (groupOf[c] < 0) {
+      groupOf[c] = static_cast<int>(groups.members.size());
+      groups.volumesOf.push_back(c);
+      groups.members.emplace_back();
+    }
+    groups.members[static_cast<std::size_t>(groupOf[c])].push_back(f);
+  }
+  return groups;
+}
+
+}  // namespace
+
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
                            const KernelScene& packed, std::span<const SamplePoint> points,
                            std::size_t workItems, bool culling, double margin) {
@@ -173,12 +202,16 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
           PnPatchFace{0, -1, shadows.faces[k % faceCount].emits ? PN_CLASS_B : PN_CLASS_C, 0};
     return table;
   }
+  const CasterGroups casters = casterGroups(shadows);
+  const std::size_t casterCount = casters.members.size();
   // Each group fills its own entries and a private candidate list; the lists are joined in
   // group order afterwards, so the table does not depend on the thread count.
   const std::size_t groups = (workItems + kItemsPerGroup - 1) / kItemsPerGroup;
   const std::size_t supers = (groups + kGroupsPerSuper - 1) / kGroupsPerSuper;
-  std::vector<std::vector<int>> superCandidates(supers * faceCount);  // [super * faceCount + f]
-  std::vector<char> superHidden(supers * faceCount);  // one caster hides f from the super-group
+  // [super * casterCount + c]: the casters of caster group c that may meet the super-group's box,
+  // and whether one of them hides the group's faces from all of it.
+  std::vector<std::vector<int>> superCandidates(supers * casterCount);
+  std::vector<char> superHidden(supers * casterCount);
   // Each super-group's box once, not once per face: with element faces as sources (thousands)
   // the boxes would cost as much as the table.
   std::vector<BoundingBox> superBoxes(supers);
@@ -187,17 +220,15 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
     superBoxes[super] = boxOf(points, firstItem * PN_LANES, items * PN_LANES);
   });
-  tbb::parallel_for(std::size_t{0}, supers * faceCount, [&](std::size_t sf) {
-    const std::size_t firstItem = sf / faceCount * kGroupsPerSuper * kItemsPerGroup;
+  tbb::parallel_for(std::size_t{0}, supers * casterCount, [&](std::size_t sc) {
+    const std::size_t firstItem = sc / casterCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
-    const std::size_t f = sf % faceCount;
-    if (!shadows.faces[f].emits) return;  // class C everywhere, below
-    const FaceVolumes& faceVolumes = volumes[shadows.faces[f].casterFace(f)];
+    const FaceVolumes& faceVolumes = volumes[casters.volumesOf[sc % casterCount]];
     std::vector<int> all(faceVolumes.solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
-    const BoundingBox& box = superBoxes[sf / faceCount];
-    boxCandidates(faceVolumes, box, all, margin, superCandidates[sf]);
-    superHidden[sf] = boxHidden(faceVolumes, box, superCandidates[sf], margin, points,
+    const BoundingBox& box = superBoxes[sc / casterCount];
+    boxCandidates(faceVolumes, box, all, margin, superCandidates[sc]);
+    superHidden[sc] = boxHidden(faceVolumes, box, superCandidates[sc], margin, points,
                                 firstItem * PN_LANES, items * PN_LANES);
   });
   std::vector<Plane> emission(faceCount);
@@ -211,29 +242,54 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     std::vector<BoundingBox> itemBoxes(items);
     for (std::size_t w = 0; w < items; ++w)
       itemBoxes[w] = boxOf(points, (firstItem + w) * PN_LANES, PN_LANES);
-    std::vector<int> near, found;
-    for (std::size_t f = 0; f < faceCount; ++f) {
-      const EmittingFaceShadows& face = shadows.faces[f];
-      if (!face.emits) {  // nothing from it (Source::castersOnly)
+    // Faces that emit nothing (Source::castersOnly): class C.
+    for (std::size_t f = 0; f < faceCount; ++f)
+      if (!shadows.faces[f].emits)
         for (std::size_t w = firstItem; w < firstItem + items; ++w)
-          table.entries[w * faceCount + f] =
-              PnPatchFace{static_cast<cl_int>(list.size()), 0, PN_CLASS_C, 0};
-        continue;
-      }
-      const FaceVolumes& faceVolumes = volumes[face.casterFace(f)];
-      // A caster that hides the face from a whole super-group or group (a wall between it and
-      // another room's light) hides it from each of its work-items.
-      const std::size_t sf = g / kGroupsPerSuper * faceCount + f;
-      bool groupHidden = superHidden[sf];
+          table.entries[w * faceCount + f] = PnPatchFace{0, 0, PN_CLASS_C, 0};
+    std::vector<int> near, found;
+    for (std::size_t c = 0; c < casterCount; ++c) {
+      const FaceVolumes& faceVolumes = volumes[casters.volumesOf[c]];
+      // A caster that hides the faces from a whole super-group or group (a wall between them
+      // and another room's light) hides them from each of its work-items.
+      const std::size_t sc = g / kGroupsPerSuper * casterCount + c;
+      bool groupHidden = superHidden[sc];
+      near.clear();
       if (!groupHidden) {
-        boxCandidates(faceVolumes, groupBox, superCandidates[sf], margin, near);
+        boxCandidates(faceVolumes, groupBox, superCandidates[sc], margin, near);
         groupHidden = boxHidden(faceVolumes, groupBox, near, margin, points, firstItem * PN_LANES,
                                 items * PN_LANES);
       }
-      const FaceOfPatch of{face, faceVolumes, emission[f], packed.faces[f].firstOccluder};
-      for (std::size_t w = firstItem; w < firstItem + items; ++w)
-        table.entries[w * faceCount + f] = patchEntry(of, points, w, itemBoxes[w - firstItem], near,
-                                                      groupHidden, margin, found, list);
+      for (std::size_t w = firstItem; w < firstItem + items; ++w) {
+        // The work-item's candidates and umbra test, searched at its first face that some
+        // lane faces, and shared by the group's faces (one candidate list for all of them).
+        bool searched = false, hidden = groupHidden;
+        cl_int first = 0, count = 0;
+        for (std::size_t f : casters.members[c]) {
+          const EmittingFaceShadows& face = shadows.faces[f];
+          PnPatchFace& entry = table.entries[w * faceCount + f];
+          if (patchSeesNothing(points, w * PN_LANES, face, emission[f])) {
+            entry = PnPatchFace{0, 0, PN_CLASS_C, 0};
+            continue;
+          }
+          if (!searched) {
+            searched = true;
+            if (!hidden && !near.empty()) {
+              boxCandidates(faceVolumes, itemBoxes[w - firstItem], near, margin, found);
+              hidden = boxHidden(faceVolumes, itemBoxes[w - firstItem], found, margin, points,
+                                 w * PN_LANES, PN_LANES);
+              if (!hidden) {
+                first = static_cast<cl_int>(list.size());
+                for (int k : found) list.push_back(packed.faces[f].firstOccluder + k);
+                count = static_cast<cl_int>(list.size()) - first;
+              }
+            }
+          }
+          entry = hidden
+                      ? PnPatchFace{0, 0, PN_CLASS_UMBRA, facingLanes(points, w, face, emission[f])}
+                      : PnPatchFace{first, count, PN_CLASS_B, 0};
+        }
+      }
     }
   });
   std::size_t offset = 0;

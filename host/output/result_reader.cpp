@@ -235,6 +235,9 @@ InterreflectionReport readInterreflection(const nlohmann::json& summary) {
   r.residual = j.value("relative_residual", 0.0);
   r.transferReused = j.value("transfer_reused", false);
   r.refinementCapped = j.value("refinement_capped", false);
+  r.linkError = j.value("link_error", 0.0);
+  r.links = j.value("links", std::size_t{0});
+  r.denseElements = j.value("dense_elements_past_limit", std::size_t{0});
   for (const nlohmann::json& name : j.value("solids_without_material", nlohmann::json::array()))
     r.blackSolids.push_back(name.get<std::string>());
   if (j.contains("timing")) {

@@ -41,6 +41,41 @@ Scene elementSources(const Scene& scene, const SurfaceMesh& mesh, bool blocks) {
   return elements;
 }
 
+// About 2^22 point·element values (16 MB of float) per launch.
+constexpr std::size_t kTransferBatchValues = std::size_t{1} << 22;
+
+// t(i, j) for every receiver i and sender j (the engine's source firstElement + j): receiver i
+// takes points[start[i] … start[i + 1]), and `average(values, i)` reduces sender j's values at
+// them (values[k - start[i]] for point k) to t(i, j). Whole receivers per launch, about
+// kTransferBatchValues values each, the launches pipelined (illuminanceBySourceBatches).
+template <class Average>
+void transferByBatches(IlluminanceEngine& engine, std::span<const SamplePoint> points,
+                       std::span<const std::size_t> start, std::size_t firstElement,
+                       Eigen::MatrixXd& t, const Average& average) {
+  const std::size_t n = start.size() - 1;
+  std::vector<std::size_t> firstOf;  // batch → its first receiver; one more entry, n
+  for (std::size_t first = 0; first < n;) {
+    firstOf.push_back(first);
+    std::size_t last = first + 1;
+    while (last < n && (start[last + 1] - start[first]) * n <= kTransferBatchValues) ++last;
+    first = last;
+  }
+  firstOf.push_back(n);
+  std::vector<std::span<const SamplePoint>> batches;
+  for (std::size_t b = 0; b + 1 < firstOf.size(); ++b)
+    batches.push_back(points.subspan(start[firstOf[b]], start[firstOf[b + 1]] - start[firstOf[b]]));
+  engine.illuminanceBySourceBatches(
+      batches, [&](std::size_t b, const std::vector<float>& e, std::size_t stride) {
+        const std::size_t first = firstOf[b], last = firstOf[b + 1], begin = start[first];
+        for (std::size_t j = 0; j < n; ++j) {
+          const float* row = e.data() + (firstElement + j) * stride;
+          for (std::size_t i = first; i < last; ++i)
+            t(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+                average(row + (start[i] - begin), i);
+        }
+      });
+}
+
 }  // namespace
 
 Scene elementScene(const Scene& scene, const SurfaceMesh& mesh) {
@@ -56,36 +91,17 @@ Eigen::MatrixXd elementTransfer(IlluminanceEngine& engine, const SurfaceMesh& me
   const auto n = static_cast<Eigen::Index>(mesh.elements.size());
   Eigen::MatrixXd t = Eigen::MatrixXd::Zero(n, n);
   if (n == 0) return t;
-  // Whole elements per batch, about 2^22 node·element values (16 MB of float) at a time.
-  const std::size_t budget = std::size_t{1} << 22;
-  std::size_t first = 0;
-  while (first < mesh.elements.size()) {
-    std::size_t last = first + 1;
-    while (last < mesh.elements.size() &&
-           (mesh.nodeStart[last + 1] - mesh.nodeStart[first]) * mesh.elements.size() <= budget)
-      ++last;
-    const std::size_t begin = mesh.nodeStart[first], end = mesh.nodeStart[last];
-    std::size_t stride = 0;
-    const std::vector<float> e = engine.illuminanceBySource(
-        std::span<const SamplePoint>(mesh.nodes).subspan(begin, end - begin), stride);
-    for (Eigen::Index j = 0; j < n; ++j) {
-      const float* row = e.data() + (firstElement + static_cast<std::size_t>(j)) * stride;
-      for (std::size_t i = first; i < last; ++i) {
-        double sum = 0.0;
-        for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node)
-          sum += mesh.weights[node] * row[node - begin];
-        t(static_cast<Eigen::Index>(i), j) = sum;
-      }
-    }
-    first = last;
-  }
+  transferByBatches(engine, mesh.nodes, mesh.nodeStart, firstElement, t,
+                    [&](const float* values, std::size_t i) {
+                      double sum = 0.0;
+                      for (std::size_t k = 0; k < mesh.nodeStart[i + 1] - mesh.nodeStart[i]; ++k)
+                        sum += mesh.weights[mesh.nodeStart[i] + k] * values[k];
+                      return sum;
+                    });
   return t;
 }
 
 namespace {
-
-// About 2^22 point·element values (16 MB of float) per launch.
-constexpr std::size_t kTransferBatchValues = std::size_t{1} << 22;
 
 // Each receiver's near senders under `rule`, in increasing order: the elements it can exchange
 // light with that are not far.
@@ -134,7 +150,6 @@ std::vector<SamplePoint> farPoints(const SurfaceElement& element) {
 // cd/m², every pair.
 void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, std::size_t firstElement,
                       Eigen::MatrixXd& t) {
-  const std::size_t n = mesh.elements.size();
   std::vector<SamplePoint> points;
   std::vector<std::size_t> start = {0};
   for (const SurfaceElement& element : mesh.elements) {
@@ -142,25 +157,13 @@ void farPointTransfer(IlluminanceEngine& engine, const SurfaceMesh& mesh, std::s
     points.insert(points.end(), own.begin(), own.end());
     start.push_back(points.size());
   }
-  std::size_t first = 0;
-  while (first < n) {
-    std::size_t last = first + 1;
-    while (last < n && (start[last + 1] - start[first]) * n <= kTransferBatchValues) ++last;
-    const std::size_t begin = start[first], end = start[last];
-    std::size_t stride = 0;
-    const std::vector<float> e = engine.illuminanceBySource(
-        std::span<const SamplePoint>(points).subspan(begin, end - begin), stride);
-    for (std::size_t j = 0; j < n; ++j) {
-      const float* row = e.data() + (firstElement + j) * stride;
-      for (std::size_t i = first; i < last; ++i) {
-        double sum = 0.0;
-        for (std::size_t k = start[i]; k < start[i + 1]; ++k) sum += row[k - begin];
-        t(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
-            sum / static_cast<double>(start[i + 1] - start[i]);
-      }
-    }
-    first = last;
-  }
+  transferByBatches(engine, points, start, firstElement, t,
+                    [&](const float* values, std::size_t i) {
+                      const std::size_t count = start[i + 1] - start[i];
+                      double sum = 0.0;
+                      for (std::size_t k = 0; k < count; ++k) sum += values[k];
+                      return sum / static_cast<double>(count);
+                    });
 }
 
 // The node average over receiver i of E from each of senders[i] (the receivers in `receivers`),

@@ -53,10 +53,15 @@ struct LinkBatch {
 // About 2^22 values (16 MB of float) per launch.
 constexpr std::size_t kBatchValues = std::size_t{1} << 22;
 
+PlanePolygon nodePlanePolygon(const ElementTree& tree, std::span<const Plane> planes, int node) {
+  return PlanePolygon{tree.nodes[node].element.polygon, planes[node]};
+}
+
 // Replaces every sender above the leaves by those of its children the receiver `p` can exchange
 // light with (p < 0: a group of points, which takes every child). False when every sender is a
 // leaf already.
-bool splitSenders(const ElementTree& tree, int p, std::vector<int>& senders, double tolerance) {
+bool splitSenders(const ElementTree& tree, std::span<const Plane> planes, int p,
+                  std::vector<int>& senders, double tolerance) {
   std::vector<int> next;
   bool split = false;
   for (int q : senders) {
@@ -67,8 +72,8 @@ bool splitSenders(const ElementTree& tree, int p, std::vector<int>& senders, dou
     }
     split = true;
     for (int c = Q.firstChild; c < Q.firstChild + Q.childCount; ++c)
-      if (p < 0 ||
-          canExchange(tree.nodes[p].element.polygon, tree.nodes[c].element.polygon, tolerance))
+      if (p < 0 || canExchange(nodePlanePolygon(tree, planes, p), nodePlanePolygon(tree, planes, c),
+                               tolerance))
         next.push_back(c);
   }
   senders = std::move(next);
@@ -107,6 +112,8 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
   const std::size_t n = tree.nodes.size();
   std::vector<Ball> balls(n);
   for (std::size_t i = 0; i < n; ++i) balls[i] = ballOf(tree.nodes[i].element.polygon);
+  planes_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) planes_[i] = tree.nodes[i].element.polygon.plane();
 
   // The links, receiver root by receiver root in parallel, each root's list its own: joined in
   // root order, so they do not depend on the thread count.
@@ -120,7 +127,9 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
       stack.pop_back();
       const ElementNode& P = tree.nodes[p];
       const ElementNode& Q = tree.nodes[q];
-      if (p == q || !canExchange(P.element.polygon, Q.element.polygon, tolerance_)) continue;
+      if (p == q || !canExchange(nodePlanePolygon(tree, planes_, p),
+                                 nodePlanePolygon(tree, planes_, q), tolerance_))
+        continue;
       const bool small =
           P.size <= options_.largestLinkedNode && Q.size <= options_.largestLinkedNode;
       if ((P.isLeaf() && Q.isLeaf()) ||
@@ -137,17 +146,19 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
     }
   });
   std::vector<std::vector<int>> senders(n);
-  for (const auto& list : byRoot)
+  for (auto& list : byRoot) {
     for (const auto& [p, q] : list) senders[static_cast<std::size_t>(p)].push_back(q);
+    std::vector<std::pair<int, int>>().swap(list);  // each link held once from here on
+  }
 
   nodeScene_ = elementScene(scene, allNodes(tree));
-  // Each node shares the shadow casters of its highest ancestor that can be linked (no larger
-  // than largestLinkedNode): the casters are built per such node, a few per piece, rather than
-  // per node (EmittingFaceShadows::casterOwner says why that stays exact).
+  // Each node shares the shadow casters of its highest ancestor no larger than
+  // largestCasterOwner: the casters are built per such node, a few per piece, rather than per
+  // node (EmittingFaceShadows::casterOwner says why that stays exact).
   for (std::size_t i = 0; i < n && options_.shareCasters; ++i) {
     int owner = static_cast<int>(i);
     for (int up = tree.nodes[i].parent;
-         up >= 0 && tree.nodes[up].size <= options_.largestLinkedNode; up = tree.nodes[up].parent)
+         up >= 0 && tree.nodes[up].size <= options_.largestCasterOwner; up = tree.nodes[up].parent)
       owner = up;
     if (owner != static_cast<int>(i)) nodeScene_.sources[i].castersOf = owner;
   }
@@ -209,7 +220,7 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
     flush();
     pending.clear();
     for (std::size_t p : overflowed) {
-      if (!splitSenders(tree, static_cast<int>(p), senders[p], tolerance_)) {
+      if (!splitSenders(tree, planes_, static_cast<int>(p), senders[p], tolerance_)) {
         // Leaves only: as the dense transfer would, say which point overflowed.
         values[p].clear();
         throw std::runtime_error(overflowMessage(*engine_, tree, static_cast<int>(p), senders[p],
@@ -226,6 +237,8 @@ HierarchicalTransfer::HierarchicalTransfer(compute::Device& device, const Scene&
   for (std::size_t p = 0; p < n; ++p) {
     links_.source.insert(links_.source.end(), senders[p].begin(), senders[p].end());
     links_.transfer.insert(links_.transfer.end(), values[p].begin(), values[p].end());
+    std::vector<int>().swap(senders[p]);
+    std::vector<double>().swap(values[p]);
   }
 }
 
@@ -243,11 +256,9 @@ Eigen::MatrixXd HierarchicalTransfer::gather(std::span<const SamplePoint> given,
   for (std::size_t i = 0; i < order.size(); ++i) sorted[i] = given[order[i]];
   const std::span<const SamplePoint> points(sorted);
   std::vector<Ball> balls(tree.nodes.size());
-  std::vector<Plane> planes(tree.nodes.size());
-  for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+  for (std::size_t i = 0; i < tree.nodes.size(); ++i)
     balls[i] = ballOf(tree.nodes[i].element.polygon);
-    planes[i] = tree.nodes[i].element.polygon.plane();
-  }
+  const std::vector<Plane>& planes = planes_;
   const std::size_t items = (points.size() + PN_LANES - 1) / PN_LANES;
   // Each work-item's senders: the same oracle as the links, the group's points as the receiver.
   std::vector<std::vector<cl_int>> senders(items);
@@ -291,7 +302,7 @@ Eigen::MatrixXd HierarchicalTransfer::gather(std::span<const SamplePoint> given,
       for (std::size_t local = 0; local < batchItems.size(); ++local) {
         const std::size_t w = batchItems[local];
         if (!overflow.empty() && overflow[local] != 0) {
-          if (!splitSenders(tree, -1, senders[w], tolerance_))
+          if (!splitSenders(tree, planes_, -1, senders[w], tolerance_))
             engine_->linkedIlluminance(padded, start, faces);  // throws the kernel's message
           overflowed.push_back(w);
           continue;

@@ -26,13 +26,18 @@ struct HierarchyOptions {
   // 0 links leaf to leaf everywhere: the dense transfer.
   double linkError = 2e-4;
   int quadratureOrder = 4;  // nodes per axis of a receiving node (elementQuadrature)
-  // No link joins a node whose longest edge is above this (m): the kernel holds the occluders
-  // between a point and one source face in fixed room (PN_MAX_CONTOUR_EDGES), and a large node
-  // seen past many solids (a whole floor past an office's desks) overflows it.
-  double largestLinkedNode = 2.0;
-  // Nodes share the shadow casters of their largest linkable ancestor (the transfer's memory and
-  // set-up grow with the pieces rather than the nodes; EmittingFaceShadows::casterOwner). Off:
-  // each node its own, the dense transfer's casters and floats.
+  // No link joins a node whose longest edge is above this (m). The bound lets a node of size s
+  // link only beyond about s/0.185 at 2e-3 (s/0.086 at 2e-4), so nodes above 2 m link only in
+  // halls tens of metres across: there a cap at 2 m would leave every pair of 2 m nodes of the
+  // floor and the ceiling a link, as many as the square of the floor area. A large node seen
+  // past many solids overflows the kernel's room for occluders (PN_MAX_CONTOUR_EDGES) and has
+  // its links split, as any receiver that overflows.
+  double largestLinkedNode = 16.0;
+  // Nodes share the shadow casters of their largest ancestor no longer than this (m; the
+  // transfer's memory and set-up grow with the pieces rather than the nodes;
+  // EmittingFaceShadows::casterOwner); nodes above it have their own. Off: each node its own,
+  // the dense transfer's casters and floats.
+  double largestCasterOwner = 2.0;
   bool shareCasters = true;
 };
 
@@ -67,7 +72,8 @@ class HierarchicalTransfer {
   const ElementTree* tree_;
   HierarchyOptions options_;
   double tolerance_;
-  Scene nodeScene_;  // every tree node as a source of 1 cd/m²
+  std::vector<Plane> planes_;  // each tree node's plane
+  Scene nodeScene_;            // every tree node as a source of 1 cd/m²
   std::unique_ptr<IlluminanceEngine> engine_;
   NodeLinks links_;
 };

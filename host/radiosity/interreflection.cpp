@@ -2,17 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
-#include <fmt/format.h>
-
-#include "engine/daylight_evaluation.hpp"
 #include "geometry/fnv1a_hash.hpp"
 #include "geometry/tolerance.hpp"
 #include "radiosity/element_transfer.hpp"
+#include "radiosity/node_light.hpp"
 #include "radiosity/sun_on_elements.hpp"
 #include "scene/daylight.hpp"
 #include "timing/seconds_since.hpp"
@@ -20,57 +17,6 @@
 namespace penumbra {
 
 namespace {
-
-// The direct light at every node: E per channel (each source's E split into channels by its
-// colour relative to the colour's luminance, as a source's `color` keeps its photometric
-// luminance; the photometric luminaires white), E per light group, photometric (each Lambertian
-// source alone, then the luminaires together, then the host's sky). The sun is left out: the
-// mesh does not follow it, so that a scene's daylight factor is the same with any sun or none,
-// and its light is taken once on the final mesh (Interreflection::finishMesh).
-struct NodeLight {
-  Eigen::MatrixX3d direct;  // lx, [node][channel]
-  Eigen::MatrixXd byGroup;  // lx, [node][group]
-};
-
-NodeLight nodeLight(IlluminanceEngine& engine, const Scene& scene, const SurfaceMesh& mesh,
-                    const HostLight& host) {
-  // The sources as the engine reports them: the scene's, then its sky's and ground's (white).
-  const std::vector<Source> all = daylightScene(scene, 0.0).sources;
-  const std::size_t sources = all.size();
-  std::vector<Eigen::Vector3d> channel(sources);
-  for (std::size_t s = 0; s < sources; ++s) {
-    const Vec3& color = all[s].color;
-    channel[s] = color / photometric(color);
-  }
-  const auto n = static_cast<Eigen::Index>(mesh.nodes.size());
-  const bool luminaires = !scene.luminaires.empty();
-  const bool sky = static_cast<bool>(host.sky);
-  NodeLight light{Eigen::MatrixX3d::Zero(n, 3),
-                  Eigen::MatrixXd::Zero(n, static_cast<Eigen::Index>(sources + luminaires + sky))};
-  if (n == 0) return light;
-  const IlluminanceResult result = evaluateDaylight(engine, scene, mesh.nodes, true);
-  for (Eigen::Index node = 0; node < n; ++node) {
-    for (std::size_t s = 0; s < sources; ++s) {
-      const double e = result.bySource[static_cast<std::size_t>(node) * sources + s];
-      light.direct.row(node) += e * channel[s].transpose();
-      light.byGroup(node, static_cast<Eigen::Index>(s)) = e;
-    }
-    if (!result.luminaires.empty()) {
-      const double e = result.luminaires[static_cast<std::size_t>(node)];
-      light.direct.row(node).array() += e;
-      light.byGroup(node, static_cast<Eigen::Index>(sources)) = e;
-    }
-  }
-  if (sky) {  // white, one more group after the luminaires
-    const std::vector<double> e = host.sky(mesh.nodes);
-    const auto group = static_cast<Eigen::Index>(sources + luminaires);
-    for (Eigen::Index node = 0; node < n; ++node) {
-      light.direct.row(node).array() += e[static_cast<std::size_t>(node)];
-      light.byGroup(node, group) = e[static_cast<std::size_t>(node)];
-    }
-  }
-  return light;
-}
 
 // Element averages of node values (the nodes' weights).
 Eigen::MatrixXd elementAverage(const SurfaceMesh& mesh, const Eigen::MatrixXd& atNodes) {
@@ -80,47 +26,6 @@ Eigen::MatrixXd elementAverage(const SurfaceMesh& mesh, const Eigen::MatrixXd& a
     for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node)
       average.row(i) += mesh.weights[node] * atNodes.row(static_cast<Eigen::Index>(node));
   return average;
-}
-
-// Elements where the direct light is uneven. Each light group's node E is scaled to unit flux
-// onto the elements (Σ E·A), the groups are added, and an element is split when (Emax - Emin)·A
-// of that sum over its nodes exceeds `fraction` of its whole flux (the number of lit groups).
-// Neither reflectances nor the sources' output enter, only where the sources are and what they
-// see: a study varying reflectances or fluxes keeps its mesh and reuses the transfer
-// (transfer_cache.hpp). When splitting them all would take the mesh past `maxElements`, the most
-// uneven are split (a split adds up to three elements) and `capped` is set.
-std::vector<char> unevenElements(const SurfaceMesh& mesh, const Eigen::MatrixXd& byGroup,
-                                 double fraction, std::size_t maxElements, bool& capped) {
-  const std::size_t n = mesh.elements.size();
-  const Eigen::MatrixXd average = elementAverage(mesh, byGroup);
-  Eigen::VectorXd scale = Eigen::VectorXd::Zero(byGroup.cols());
-  double groups = 0.0;
-  for (Eigen::Index g = 0; g < byGroup.cols(); ++g) {
-    double flux = 0.0;
-    for (std::size_t i = 0; i < n; ++i)
-      flux += average(static_cast<Eigen::Index>(i), g) * mesh.elements[i].area;
-    if (flux > 0.0) scale[g] = 1.0 / flux, groups += 1.0;
-  }
-  const Eigen::VectorXd balanced = byGroup * scale;
-  std::vector<std::pair<double, std::size_t>> uneven;  // (spread, element), above the bound
-  for (std::size_t i = 0; i < n; ++i) {
-    double lo = INFINITY, hi = -INFINITY;
-    for (std::size_t node = mesh.nodeStart[i]; node < mesh.nodeStart[i + 1]; ++node) {
-      const double e = balanced[static_cast<Eigen::Index>(node)];
-      lo = std::min(lo, e), hi = std::max(hi, e);
-    }
-    const double spread = (hi - lo) * mesh.elements[i].area;
-    if (spread > fraction * groups) uneven.emplace_back(spread, i);
-  }
-  const std::size_t room = maxElements > n ? (maxElements - n) / 3 : 0;
-  if (uneven.size() > room) {
-    capped = true;
-    std::sort(uneven.begin(), uneven.end(), std::greater<>());  // ties: higher index first
-    uneven.resize(room);
-  }
-  std::vector<char> split(n, 0);
-  for (const auto& [spread, i] : uneven) split[i] = 1;
-  return split;
 }
 
 // The photometric value of each row's channels.
@@ -160,24 +65,21 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   // The faces that see a source: with a sky, those that see an opening (its whole rectangle as
   // the sky face, cut below the scene).
   mesh_ = buildSurfaceMesh(skyFacesScene(scene), mesh);
+  if (mesh_.elements.size() > mesh.maxElements) {
+    // More elements than the dense transfer takes before any refinement: hierarchical links at
+    // the default bound, which have no element limit.
+    const std::size_t denseElements = mesh_.elements.size();
+    MeshOptions linked = mesh;
+    linked.linkError = MeshOptions::kDefaultLinkError;
+    solveHierarchically(device, scene, direct, linked, engine, cache, host);
+    report_.denseElements = denseElements;
+    return;
+  }
   NodeLight light = nodeLight(direct, scene, mesh_, host);
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
-  if (mesh_.elements.size() > mesh.maxElements) {
-    // Elements scale with 1/size²: the size that would fit, rounded up to 5 cm.
-    const double fits = std::ceil(20.0 * mesh.elementSize *
-                                  std::sqrt(static_cast<double>(mesh_.elements.size()) /
-                                            static_cast<double>(mesh.maxElements))) /
-                        20.0;
-    throw std::runtime_error(fmt::format(
-        "interreflection: {} elements at --element-size {} m, more than the {} the dense "
-        "solver takes; use --element-size {} or larger, --link-error {} (hierarchical links, "
-        "no element limit), or --direct-only",
-        mesh_.elements.size(), mesh.elementSize, mesh.maxElements, fits,
-        MeshOptions::kDefaultLinkError));
-  }
   for (int level = 0; level < mesh.refinementLevels; ++level) {
-    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
-                                                   mesh.maxElements, report_.refinementCapped);
+    const std::vector<char> split =
+        unevenElements(mesh_, light, mesh.refinement, mesh.maxElements, report_.refinementCapped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     mesh_ = refineMesh(mesh_, split, mesh.quadratureOrder, tolerance);
     light = nodeLight(direct, scene, mesh_, host);
@@ -225,7 +127,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
   NodeLight light = nodeLight(direct, scene, mesh_, host);
   for (int level = 0; level < mesh.refinementLevels; ++level) {
     bool capped = false;
-    const std::vector<char> split = unevenElements(mesh_, light.byGroup, mesh.refinement,
+    const std::vector<char> split = unevenElements(mesh_, light, mesh.refinement,
                                                    std::numeric_limits<std::size_t>::max(), capped);
     if (std::find(split.begin(), split.end(), 1) == split.end()) break;
     for (std::size_t i = 0; i < split.size(); ++i)
@@ -257,6 +159,7 @@ void Interreflection::solveHierarchically(compute::Device& device, const Scene& 
     if (cache) cache->insert(key, geometry_);
   }
   report_.links = geometry_->links->links().source.size();
+  report_.linkError = mesh.linkError;
 
   start = Clock::now();
   const HierarchicalSolution solved = solveHierarchical(*geometry_->links, direct_);

@@ -46,7 +46,13 @@ struct InterreflectionReport {
   bool transferReused = false;           // the geometry's transfer came from the cache
   bool refinementCapped = false;         // refinement stopped at MeshOptions::maxElements
   std::size_t links = 0;                 // hierarchical links; 0 for the dense transfer
+  double linkError = 0.0;                // the links' error bound; 0 for the dense transfer
   std::vector<std::string> blackSolids;  // reached by light, no material: black
+
+  // Above 0: the dense transfer was asked for, but its mesh had this many elements before any
+  // refinement, more than MeshOptions::maxElements; hierarchical links at the default bound
+  // (MeshOptions::kDefaultLinkError) took its place.
+  std::size_t denseElements = 0;
 };
 
 // Interreflected E at points, and the part of it that comes from the sun.

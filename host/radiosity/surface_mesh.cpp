@@ -25,9 +25,8 @@ struct FaceRef {
   ConvexPolygon polygon;
 };
 
-// Some vertex of `other` strictly in front of `polygon`'s plane.
-bool anyInFront(const ConvexPolygon& polygon, const ConvexPolygon& other, double tolerance) {
-  const Plane plane = polygon.plane();
+// Some vertex of `other` strictly in front of `plane`.
+bool anyInFront(const Plane& plane, const ConvexPolygon& other, double tolerance) {
   return std::any_of(other.vertices().begin(), other.vertices().end(),
                      [&](const Vec3& v) { return plane.signedDistance(v) > tolerance; });
 }
@@ -35,7 +34,11 @@ bool anyInFront(const ConvexPolygon& polygon, const ConvexPolygon& other, double
 }  // namespace
 
 bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double tolerance) {
-  return anyInFront(a, b, tolerance) && anyInFront(b, a, tolerance);
+  return anyInFront(a.plane(), b, tolerance) && anyInFront(b.plane(), a, tolerance);
+}
+
+bool canExchange(const PlanePolygon& a, const PlanePolygon& b, double tolerance) {
+  return anyInFront(a.plane, b.polygon, tolerance) && anyInFront(b.plane, a.polygon, tolerance);
 }
 
 namespace {

@@ -30,14 +30,15 @@ struct MeshOptions {
   // The most elements the dense transfer takes (8 bytes × N²: 0.5 GB at 8 000; the solver works
   // on products with it and holds no other N × N matrix).
   // Refinement stops splitting there (the most uneven elements go first); a mesh larger before
-  // any refinement is refused with the element size that would fit.
+  // any refinement is solved by hierarchical links at kDefaultLinkError instead
+  // (InterreflectionReport::denseElements).
   std::size_t maxElements = 8000;
   // The elements of a piece are grouped in square blocks of cells, at most this long (m), that
   // share their shadow casters in the dense transfer (elementSceneSharingCasters): the casters
   // are built per block, not per element (a room of hundreds of solids and thousands of
   // elements would hold millions of shadow volumes), and a block's volumes hold its elements'
-  // (EmittingFaceShadows::casterOwner), so they only cull less tightly. 2 m: the largest source
-  // a link of the hierarchical transfer takes (HierarchyOptions::largestLinkedNode).
+  // (EmittingFaceShadows::casterOwner), so they only cull less tightly. 2 m: the size of the
+  // hierarchical transfer's caster owners (HierarchyOptions::largestCasterOwner).
   double casterBlockSize = 2.0;
   // The transfer: 0 the dense element-to-element matrix; above 0 hierarchical links whose
   // estimated error is at most this (HierarchyOptions::linkError), with no element limit.
@@ -80,6 +81,13 @@ std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::str
 // Whether polygons a and b can exchange light: each has a vertex more than `tolerance` in front
 // of the other's plane.
 bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double tolerance);
+// The same with each polygon's plane known (ConvexPolygon::plane), for callers that test one
+// polygon against many.
+struct PlanePolygon {
+  const ConvexPolygon& polygon;
+  const Plane& plane;
+};
+bool canExchange(const PlanePolygon& a, const PlanePolygon& b, double tolerance);
 
 // Cuts a convex piece into cells of at most `size` along two axes of its plane (the first along
 // its longest edge, so that rectangles give rectangles).

@@ -3,6 +3,7 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <future>
 #include <stdexcept>
 
 namespace penumbra {
@@ -38,12 +39,13 @@ SceneShadows buildSceneShadows(const Scene& scene,
   }
 
   // Every (face, solid) pair is independent: build them in parallel, a block of faces at a time
-  // (so that a consumer that drops the casters holds one block's), then keep the non-empty ones
-  // in order, so the result does not depend on the thread count.
+  // (so that a consumer that drops the casters holds two blocks'), then keep the non-empty ones
+  // in order, so the result does not depend on the thread count. The next block is built on a
+  // second thread while this one is kept and consumed (packing its casters for the kernel takes
+  // as long as building them, one face after another).
   const std::size_t solids = scene.solids.size();
   constexpr std::size_t kFacesPerBlock = 64;
-  std::vector<ShadowCaster> all;
-  for (std::size_t first = 0; first < shadows.faces.size(); first += kFacesPerBlock) {
+  const auto buildBlock = [&](std::size_t first, std::vector<ShadowCaster>& all) {
     const std::size_t count = std::min(kFacesPerBlock, shadows.faces.size() - first);
     all.assign(count * solids, ShadowCaster{});
     tbb::parallel_for(std::size_t{0}, all.size(), [&](std::size_t k) {
@@ -58,10 +60,22 @@ SceneShadows buildSceneShadows(const Scene& scene,
       if (f.aperture)
         caster.behindAperture = behindAperture(*f.aperture, caster.shape, shadows.tolerance);
     });
-    for (std::size_t k = 0; k < all.size(); ++k)
-      if (!all[k].shape.empty())
-        shadows.faces[first + k / solids].casters.push_back(std::move(all[k]));
+  };
+  std::vector<ShadowCaster> built, building;
+  // Declared after the buffers: an exception waits for the block being built before they go.
+  std::future<void> next;
+  if (!shadows.faces.empty()) buildBlock(0, built);
+  for (std::size_t first = 0; first < shadows.faces.size(); first += kFacesPerBlock) {
+    const std::size_t following = first + kFacesPerBlock;
+    if (following < shadows.faces.size())
+      next = std::async(std::launch::async, buildBlock, following, std::ref(building));
+    const std::size_t count = std::min(kFacesPerBlock, shadows.faces.size() - first);
+    for (std::size_t k = 0; k < built.size(); ++k)
+      if (!built[k].shape.empty())
+        shadows.faces[first + k / solids].casters.push_back(std::move(built[k]));
     for (std::size_t f = first; f < first + count; ++f) consume(shadows.faces[f]);
+    if (next.valid()) next.get();
+    std::swap(built, building);
   }
   return shadows;
 }
