@@ -50,6 +50,32 @@ const EnginePath kEnginePaths[] = {{"culled, eight lanes", {true, true, true}},
 
 constexpr double kPenumbraPastNearBox = 2e-5;
 
+// Each engine path's E at `points` against the exact E, relative to the unoccluded E, within
+// `bound`; prints each path's worst.
+struct PathCheck {
+  const Scene& scene;
+  const std::vector<SamplePoint>& points;
+  const std::vector<double>& exact;
+  const std::vector<double>& unoccluded;
+  int penumbra;  // how many points lie in the penumbra, for the printout
+};
+
+void expectEveryPathWithin(const PathCheck& check, double bound) {
+  for (const EnginePath& path : kEnginePaths) {
+    const std::vector<double> e =
+        IlluminanceEngine(cpuDevice(), check.scene, path.options).illuminance(check.points);
+    double worst = 0.0;
+    for (std::size_t k = 0; k < check.points.size(); ++k) {
+      const double error = std::abs(e[k] - check.exact[k]) / check.unoccluded[k];
+      worst = std::max(worst, error);
+      EXPECT_LE(error, bound) << path.name << " at (" << check.points[k].position.transpose()
+                              << "): E = " << e[k] << " lx, exact " << check.exact[k] << " lx";
+    }
+    std::printf("%s: %zu points (%d in the penumbra), max |E - exact| / E_unoccluded = %.2e\n",
+                path.name, check.points.size(), check.penumbra, worst);
+  }
+}
+
 // The open office's panel at (1.5, 1.5) and the chair back of its workstation 20, seen from the
 // work plane beside that chair: points from full light through the penumbra into the umbra.
 TEST(DistantSource, PenumbraPastANearBoxMeetsTheExactProjection) {
@@ -77,20 +103,8 @@ TEST(DistantSource, PenumbraPastANearBoxMeetsTheExactProjection) {
   for (std::size_t k = 0; k < points.size(); ++k)
     floorError = std::max(floorError, std::abs(lit[k] - unoccluded[k]) / unoccluded[k]);
   std::printf("unoccluded formula: max |E - exact| / E_unoccluded = %.2e\n", floorError);
-  for (const EnginePath& path : kEnginePaths) {
-    const std::vector<double> e =
-        IlluminanceEngine(cpuDevice(), scene, path.options).illuminance(points);
-    double worst = 0.0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const double error = std::abs(e[k] - exact[k]) / unoccluded[k];
-      worst = std::max(worst, error);
-      EXPECT_LE(error, kPenumbraPastNearBox)
-          << path.name << " at (" << points[k].position.transpose() << "): E = " << e[k]
-          << " lx, exact " << exact[k] << " lx";
-    }
-    std::printf("%s: %zu points (%d in the penumbra), max |E - exact| / E_unoccluded = %.2e\n",
-                path.name, points.size(), penumbra, worst);
-  }
+  expectEveryPathWithin(PathCheck{scene, points, exact, unoccluded, penumbra},
+                        kPenumbraPastNearBox);
 }
 
 // A 0.1 m Lambertian panel 4 m above a floor and 4 m from a wall, every point seeing it unoccluded:
@@ -158,20 +172,7 @@ TEST(DistantSource, ASmallPanelPastATableMeetsTheExactReferenceOnEveryPath) {
   for (std::size_t k = 0; k < points.size(); ++k)
     if (exact[k] > 1e-3 * unoccluded[k] && exact[k] < (1 - 1e-3) * unoccluded[k]) ++penumbra;
   ASSERT_GE(penumbra, 300) << "the points should cross the penumbra";
-  for (const EnginePath& path : kEnginePaths) {
-    const std::vector<double> e =
-        IlluminanceEngine(cpuDevice(), scene, path.options).illuminance(points);
-    double worst = 0.0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-      const double error = std::abs(e[k] - exact[k]) / unoccluded[k];
-      worst = std::max(worst, error);
-      EXPECT_LE(error, kSmallFacePastTable)
-          << path.name << " at (" << points[k].position.transpose() << "): E = " << e[k]
-          << " lx, exact " << exact[k] << " lx";
-    }
-    std::printf("%s: %zu points (%d in the penumbra), max |E - exact| / E_unoccluded = %.2e\n",
-                path.name, points.size(), penumbra, worst);
-  }
+  expectEveryPathWithin(PathCheck{scene, points, exact, unoccluded, penumbra}, kSmallFacePastTable);
 }
 
 // Square Lambertian panels of 0.025 to 1.6 m, 4 m above the floor, seen from the floor, a wall and

@@ -45,6 +45,34 @@ bool holds(const BoundingBox& box, const Vec3& p) {
   return (box.lo.array() <= p.array()).all() && (p.array() <= box.hi.array()).all();
 }
 
+// One solid of SolidLocator's, for one point.
+struct SolidAtPoint {
+  const ConvexPolyhedron& shape;
+  const BoundingBox& box;  // empty: no box, tested everywhere
+  int index;
+  double tolerance;
+};
+
+// The solid's tests for the point, in the order classify takes the solids: whether the point lies
+// on one of its faces (point.solid, kept for the face that looks most where the point looks) and
+// whether the solid strictly contains it (`inside`, the first one that does).
+void testSolidAtPoint(const SolidAtPoint& solid, SamplePoint& point, int& inside,
+                      double& bestAlignment) {
+  if (!solid.box.empty() && !holds(solid.box, point.position)) return;
+  // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
+  // one whose face looks where the point looks: the other one must still be able to shade it.
+  const int face = solid.shape.faceContaining(point.position, point.normal, solid.tolerance);
+  if (face >= 0) {
+    const double alignment = solid.shape.faces()[face].plane.normal.dot(point.normal);
+    if (alignment > bestAlignment) {
+      bestAlignment = alignment;
+      point.solid = solid.index;
+    }
+  }
+  if (inside < 0 && solid.shape.containsStrictly(point.position, solid.tolerance))
+    inside = solid.index;
+}
+
 }  // namespace
 
 SolidLocator::SolidLocator(const Scene& scene) : scene_(&scene) {
@@ -117,21 +145,9 @@ int SolidLocator::classifyAmong(SamplePoint& point, std::span<const int> solids)
   int inside = -1;
   double bestAlignment = -2.0;
   point.solid = -1;
-  for (int s : solids) {
-    if (!boxes_[s].empty() && !holds(boxes_[s], point.position)) continue;
-    const ConvexPolyhedron& shape = scene_->solids[s].shape;
-    // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
-    // one whose face looks where the point looks: the other one must still be able to shade it.
-    const int face = shape.faceContaining(point.position, point.normal, tolerance_);
-    if (face >= 0) {
-      const double alignment = shape.faces()[face].plane.normal.dot(point.normal);
-      if (alignment > bestAlignment) {
-        bestAlignment = alignment;
-        point.solid = s;
-      }
-    }
-    if (inside < 0 && shape.containsStrictly(point.position, tolerance_)) inside = s;
-  }
+  for (int s : solids)
+    testSolidAtPoint(SolidAtPoint{scene_->solids[s].shape, boxes_[s], s, tolerance_}, point, inside,
+                     bestAlignment);
   return inside;
 }
 
@@ -163,19 +179,8 @@ int SolidLocator::classify(SamplePoint& point) const {
   double bestAlignment = -2.0;
   point.solid = -1;
   const auto test = [&](int s) {
-    if (!boxes_[s].empty() && !holds(boxes_[s], point.position)) return;
-    const ConvexPolyhedron& shape = scene_->solids[s].shape;
-    // A point can lie on faces of two solids (the floor under a desk's foot). It lies on the
-    // one whose face looks where the point looks: the other one must still be able to shade it.
-    const int face = shape.faceContaining(point.position, point.normal, tolerance_);
-    if (face >= 0) {
-      const double alignment = shape.faces()[face].plane.normal.dot(point.normal);
-      if (alignment > bestAlignment) {
-        bestAlignment = alignment;
-        point.solid = s;
-      }
-    }
-    if (inside < 0 && shape.containsStrictly(point.position, tolerance_)) inside = s;
+    testSolidAtPoint(SolidAtPoint{scene_->solids[s].shape, boxes_[s], s, tolerance_}, point, inside,
+                     bestAlignment);
   };
   // Both lists ascend: merged, the solids are tested in scene order, as a plain loop would.
   auto a = near.begin();
