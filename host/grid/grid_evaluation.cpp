@@ -86,6 +86,7 @@ SolidLocator::SolidLocator(const Scene& scene) : scene_(&scene) {
   for (int s = 0; s < count; ++s) {
     const ConvexPolyhedron& shape = scene.solids[s].shape;
     if (shape.empty()) continue;  // an empty box: never a candidate, like the test it skips
+    tested_.push_back(s);
     if (boundingBoxOf(shape, tolerance_, boxes_[s])) {
       bounds_.add(boxes_[s].lo);
       bounds_.add(boxes_[s].hi);
@@ -95,7 +96,6 @@ SolidLocator::SolidLocator(const Scene& scene) : scene_(&scene) {
       unbounded_.push_back(s);
     }
   }
-  boxed_ = bounded;
   if (bounded.empty()) return;
   // About as many cells as solids, cubes as far as the scene's extent allows.
   const Vec3 extent = (bounds_.hi - bounds_.lo).cwiseMax(1e-3 * (bounds_.hi - bounds_.lo).norm());
@@ -159,17 +159,8 @@ void SolidLocator::classify(std::span<SamplePoint> points, std::span<int> inside
   BoundingBox run;
   for (const SamplePoint& p : points) run.add(p.position);
   std::vector<int> solids;
-  auto a = boxed_.begin();
-  auto b = unbounded_.begin();
-  while (a != boxed_.end() || b != unbounded_.end()) {
-    if (b == unbounded_.end() || (a != boxed_.end() && *a < *b)) {
-      if (boxes_[*a].overlaps(run)) solids.push_back(*a);
-      ++a;
-    } else {
-      if (boxes_[*b].empty()) solids.push_back(*b);  // boxed ones come from boxed_
-      ++b;
-    }
-  }
+  for (int s : tested_)
+    if (boxes_[s].empty() || boxes_[s].overlaps(run)) solids.push_back(s);
   for (std::size_t k = 0; k < points.size(); ++k) inside[k] = classifyAmong(points[k], solids);
 }
 
@@ -286,12 +277,18 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
     chunk.outsideAt.reserve(batchSize);
     chunk.inside.reserve(batchSize);
     chunk.onSolid.reserve(batchSize);
-    while (next < n && chunk.outside.size() < batchSize) {
+    // Full: a batch for the estimator, or a run of inside points with nothing waiting for it,
+    // which goes on at once.
+    const auto full = [&] {
+      return chunk.outside.size() >= batchSize ||
+             (chunk.outside.empty() && chunk.inside.size() >= batchSize);
+    };
+    while (next < n && !full()) {
       // The rest of the classified block, point by point.
       const std::size_t first = classified(next);
       const std::size_t end = first + std::min(aheadPoints.size() - first, n - next);
       std::size_t k = first;
-      for (; k < end && chunk.outside.size() < batchSize; ++k) {
+      for (; k < end && !full(); ++k) {
         const SamplePoint& point = aheadPoints[k];
         const int in = aheadInside[k];
         if (in < 0) {
@@ -300,14 +297,8 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
         }
         chunk.inside.push_back(in);
         chunk.onSolid.push_back(point.solid);
-        // A run of inside points with nothing waiting for the estimator goes on at once.
-        if (chunk.outside.empty() && chunk.inside.size() >= batchSize) {
-          ++k;
-          break;
-        }
       }
       next += k - first;
-      if (chunk.outside.empty() && chunk.inside.size() >= batchSize) break;
     }
   };
 

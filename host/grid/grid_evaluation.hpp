@@ -51,7 +51,7 @@ class SolidLocator {
   int cells_[3] = {1, 1, 1};
   std::vector<std::vector<int>> cellSolids_;  // per cell, ascending solid indices
   std::vector<int> unbounded_;                // solids whose box could not be bounded
-  std::vector<int> boxed_;                    // solids with a box, ascending
+  std::vector<int> tested_;                   // every solid with a shape, ascending
 };
 
 // The sample points of one grid in the grid's own order (row-major for planar grids, the order
