@@ -15,7 +15,9 @@
 // and hierarchy_bench measure those).
 // Two rates per scene: over the whole wall time, and over what the dense run costs beyond a
 // sparse one (120 × 80 points) of the same scene, which leaves out every fixed cost. Each of R
-// repeats prints its runs; the last line of a scene takes the least wall time of each kind.
+// repeats prints its runs; then a line of the least wall time of each kind (best) and one of
+// each kind's median wall time (median: on a shared virtual machine single runs vary by ±20 %,
+// and the best dense run less the best sparse one can flatter).
 // PoCL is pinned to two threads (POCL_MAX_PTHREAD_COUNT=2) unless the environment says otherwise.
 //   usage: end_to_end_bench [--device cpu|gpu|<index>] [--repeat R] [--keep DIR] [--binary PATH]
 // --binary runs another build of penumbra (an older one, to compare); the kernel alone is always
@@ -196,7 +198,16 @@ void print(const std::string& label, const Run& d, const Run& s, double kernel) 
   std::fflush(stdout);
 }
 
-// Each run, then the best of them (the least wall time of each kind: the machine is shared).
+// The run of median wall time among `runs` (the upper one of an even count).
+Run medianRun(std::vector<Run> runs) {
+  const auto middle = runs.begin() + static_cast<std::ptrdiff_t>(runs.size() / 2);
+  std::nth_element(runs.begin(), middle, runs.end(),
+                   [](const Run& a, const Run& b) { return a.wall < b.wall; });
+  return *middle;
+}
+
+// Each run, then the best of them (the least wall time of each kind: the machine is shared) and
+// the median (each kind's median wall time: less sensitive than the best to one lucky sparse run).
 void runCase(const std::string& name, bool boxes, const fs::path& directory,
              const std::string& device, int repeat) {
   const fs::path dense = directory / (name + "-dense.yaml");
@@ -205,6 +216,8 @@ void runCase(const std::string& name, bool boxes, const fs::path& directory,
   std::ofstream(sparse) << floorYaml(0.1, boxes);
   Run bestDense, bestSparse;
   double bestKernel = 0;
+  std::vector<Run> denseRuns, sparseRuns;
+  std::vector<double> kernels;
   for (int r = 0; r < repeat; ++r) {
     const Run d = runBinary(dense, directory / (name + "-dense"), device);
     const Run s = runBinary(sparse, directory / (name + "-sparse"), device);
@@ -213,8 +226,14 @@ void runCase(const std::string& name, bool boxes, const fs::path& directory,
     if (r == 0 || d.wall < bestDense.wall) bestDense = d;
     if (r == 0 || s.wall < bestSparse.wall) bestSparse = s;
     if (r == 0 || kernel < bestKernel) bestKernel = kernel;
+    denseRuns.push_back(d);
+    sparseRuns.push_back(s);
+    kernels.push_back(kernel);
   }
   print(fmt::format("{} best", name), bestDense, bestSparse, bestKernel);
+  const auto middle = kernels.begin() + static_cast<std::ptrdiff_t>(kernels.size() / 2);
+  std::nth_element(kernels.begin(), middle, kernels.end());
+  print(fmt::format("{} median", name), medianRun(denseRuns), medianRun(sparseRuns), *middle);
 }
 
 }  // namespace

@@ -88,9 +88,11 @@ __kernel void illuminance(
       }
       int8 dark = view.use & ((view.u1 <= view.u0) | (view.v1 <= view.v0));
       float8 e_face = 0.0f;
-      if (!all(view.use))
-        e_face = horizon_cuts8(&points, face, &tables) ? unoccluded_face8(&points, face, &tables)
-                                                       : whole_face8(&points, face, &tables);
+      if (!all(view.use)) {
+        bool cut = false;
+        e_face = whole_face8(&points, face, &tables, &cut);
+        if (cut) e_face = unoccluded_face8(&points, face, &tables);
+      }
       if (pn_any(view.use & ~dark)) {
         const PnEmission em = emission_of(face, &tables); /* uniform, or the sky's polynomial */
         e_face =

@@ -264,46 +264,53 @@ inline float8 whole_small_face8(const Points8* pts, PnSourceFace face, int k,
                 in_front8(face, pts->px, pts->py, pts->pz));
 }
 
-/* The same where no lane's horizon cuts the face (every vertex at height >= 0, as
- * horizon_edge8 tests them): the face's own edges, no clipping; the same sum unoccluded_face8
- * gives there. */
-inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+/* Whether some lane's horizon cuts the face: a vertex (from P) below the horizon plane. */
+inline int8 below_horizon8(const Points8* pts, float8 ax, float8 ay, float8 az) {
+  return pts->nx * ax + pts->ny * ay + pts->nz * az < 0.0f;
+}
+
+/* The same sum where no lane's horizon cuts the face (every vertex at height >= 0): the face's
+ * own edges, no clipping; the same sum unoccluded_face8 gives there. The horizon test is taken
+ * on the vertices as the loop reads them; where it finds a cut, *cut is set and the caller takes
+ * unoccluded_face8 instead (the value returned is then meaningless). */
+inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
+                          bool* cut) {
   const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   const int m = face.vertexCount;
   const PnEmission em = emission_of(face, tables);
   float8 ax, ay, az, bx, by, bz;
   pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
+  int8 below = below_horizon8(pts, ax, ay, az);
   PnCentre8 centre;
   int k = 0;
   int8 small_lanes = 0;
   float8 e_small = 0.0f;
   const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
-  if (any_small) {
-    e_small = whole_small_face8(pts, face, k, &centre, tables, &em);
-    if (pn_all(small_lanes)) return e_small;
+  if (any_small && pn_all(small_lanes)) {
+    for (int i = 1; i < m; ++i) {
+      pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &bx, &by, &bz);
+      below |= below_horizon8(pts, bx, by, bz);
+    }
+    *cut = pn_any(below);
+    return *cut ? 0.0f : whole_small_face8(pts, face, k, &centre, tables, &em);
   }
   PnSum8 sum = {0.0f, 0.0f};
   for (int i = 0; i < m; ++i) {
     pn_from8(tables->sourceVertices[face.firstVertex + (i + 1 == m ? 0 : i + 1)], pts, &bx, &by,
              &bz);
+    if (i + 1 < m) below |= below_horizon8(pts, bx, by, bz);
     pn_sum_add8(&sum, edge_term8(ax, ay, az, bx, by, bz, nx, ny, nz, &em));
     ax = bx;
     ay = by;
     az = bz;
   }
+  *cut = pn_any(below);
+  if (*cut) return 0.0f;
   const float8 e =
       select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
-  return any_small ? select(e, e_small, small_lanes) : e;
-}
-
-inline bool horizon_cuts8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
-  int8 below = 0;
-  for (int i = 0; i < face.vertexCount; ++i) {
-    float8 ax, ay, az;
-    pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &ax, &ay, &az);
-    below |= pts->nx * ax + pts->ny * ay + pts->nz * az < 0.0f;
-  }
-  return pn_any(below);
+  if (!any_small) return e;
+  e_small = whole_small_face8(pts, face, k, &centre, tables, &em);
+  return select(e, e_small, small_lanes);
 }
 
 /* unoccluded_face8's sum with each term taken from P (centre null) or relative to the small

@@ -114,7 +114,7 @@ typedef struct {
 
 /* The patch classes the host's patch table writes. Nishita's class A (every point sees the whole
  * face above its horizon) has no value: whether a horizon cuts the face the kernel tests itself,
- * in float, the way it clips (horizon_cuts8), so such patches are class B too. */
+ * in float, the way it clips (below_horizon8), so such patches are class B too. */
 #define PN_CLASS_B 1     /* some point may receive light from the face */
 #define PN_CLASS_C 2     /* no point of the patch receives anything from the face */
 #define PN_CLASS_UMBRA 3 /* every point of the patch is in one occluder's umbra: E = 0 */

@@ -90,6 +90,21 @@ bool boxHidden(const FaceVolumes& volumes, const BoundingBox& box, std::span<con
   return false;
 }
 
+// The solid that every one of `count` points from `first` lies on, or -1 (none, or not one).
+int commonSolid(std::span<const SamplePoint> points, std::size_t first, std::size_t count) {
+  const int solid = pointAt(points, first).solid;
+  for (std::size_t i = first + 1; i < first + count; ++i)
+    if (pointAt(points, i).solid != solid) return -1;
+  return solid;
+}
+
+// Drops from `near` the casters whose solid is `common`, the one every point of a group lies on:
+// the kernel never lets a solid shade its own points, so such a caster shades none of them (a
+// floor slab under a work plane's points, a desk under its top's).
+void dropOwnSolid(const FaceVolumes& volumes, int common, std::vector<int>& near) {
+  if (common >= 0) std::erase_if(near, [&](int k) { return volumes.solid[k] == common; });
+}
+
 // The lanes of work-item w that face the source's face (facesTheFace): in an umbra, the kernel's
 // shadow class Umbra rather than Unlit.
 cl_int facingLanes(std::span<const SamplePoint> points, std::size_t w,
@@ -248,6 +263,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
         for (std::size_t w = firstItem; w < firstItem + items; ++w)
           table.entries[w * faceCount + f] = PnPatchFace{0, 0, PN_CLASS_C, 0};
     std::vector<int> near, found;
+    const int groupSolid = commonSolid(points, firstItem * PN_LANES, items * PN_LANES);
     for (std::size_t c = 0; c < casterCount; ++c) {
       const FaceVolumes& faceVolumes = volumes[casters.volumesOf[c]];
       // A caster that hides the faces from a whole super-group or group (a wall between them
@@ -259,6 +275,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
         boxCandidates(faceVolumes, groupBox, superCandidates[sc], margin, near);
         groupHidden = boxHidden(faceVolumes, groupBox, near, margin, points, firstItem * PN_LANES,
                                 items * PN_LANES);
+        dropOwnSolid(faceVolumes, groupSolid, near);
       }
       for (std::size_t w = firstItem; w < firstItem + items; ++w) {
         // The work-item's candidates and umbra test, searched at its first face that some

@@ -288,15 +288,23 @@ GridRun streamGrid(const Scene& scene, const CalculationGrid& grid,
       const std::size_t first = classified(next);
       const std::size_t end = first + std::min(aheadPoints.size() - first, n - next);
       std::size_t k = first;
-      for (; k < end && !full(); ++k) {
-        const SamplePoint& point = aheadPoints[k];
-        const int in = aheadInside[k];
-        if (in < 0) {
-          chunk.outsideAt.push_back(chunk.inside.size());
-          chunk.outside.push_back(point);
+      while (k < end && !full()) {
+        // A run of points outside solids, as far as the batch has room, is taken whole; a point
+        // inside a solid alone.
+        std::size_t stop = k + 1;
+        if (aheadInside[k] < 0) {
+          const std::size_t room = batchSize - chunk.outside.size();
+          stop = k;
+          while (stop < end && stop - k < room && aheadInside[stop] < 0) ++stop;
+          const std::size_t at = chunk.inside.size();
+          for (std::size_t j = k; j < stop; ++j) chunk.outsideAt.push_back(at + (j - k));
+          chunk.outside.insert(chunk.outside.end(), aheadPoints.begin() + k,
+                               aheadPoints.begin() + stop);
         }
-        chunk.inside.push_back(in);
-        chunk.onSolid.push_back(point.solid);
+        chunk.inside.insert(chunk.inside.end(), aheadInside.begin() + k,
+                            aheadInside.begin() + stop);
+        for (std::size_t j = k; j < stop; ++j) chunk.onSolid.push_back(aheadPoints[j].solid);
+        k = stop;
       }
       next += k - first;
     }

@@ -107,6 +107,7 @@ void GridFileWriter::writeBatches() {
 
 void GridFileWriter::writeBatch(const Batch& batch) {
   rows_.clear();
+  rows_.reserve(batch.illuminance.size());
   for (std::size_t k = 0; k < batch.illuminance.size(); ++k) {
     const std::size_t i = batch.first + k;
     const int inside = batch.inside[k];

@@ -92,6 +92,13 @@ class GridRows {
     res_.clear();
     pts_.clear();
   }
+  // Room for `points` rows of the common widths (a plain grid's), so that a first batch's
+  // buffers are not grown, and copied, by doubling; wider rows grow them as needed.
+  void reserve(std::size_t points) {
+    csv_.reserve(points * 64);
+    res_.reserve(points * 16);
+    pts_.reserve(points * 32);
+  }
 
  private:
   void addResLine(const char* text, std::size_t size);
