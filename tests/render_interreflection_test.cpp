@@ -13,7 +13,6 @@
 #include "illuminance/estimator.hpp"
 #include "radiosity/indirect_field.hpp"
 #include "radiosity/radiosity_solver.hpp"
-#include "render/interval_sampling.hpp"
 #include "render/renderer.hpp"
 #include "sanitized_build.hpp"
 #include "scene/scene_loader.hpp"
@@ -130,64 +129,6 @@ TEST(RenderedTotal, LuminanceIsReflectanceOverPiTimesTheTotalPerChannel) {
   }
   EXPECT_GT(coloured, 100);
   EXPECT_LE(worst, 1e-5);
-}
-
-// With --interval 8 the interreflected light is taken from the field at the exact samples and
-// interpolated between them only along a stretch on one kept triangle of the field whose line
-// misses the field by at most the plan's kInterpolationError (perspective included): so at
-// every pixel the interreflected part of E (the total render's E less the direct render's,
-// whose plan is the same) is within 1e-3 of the field's value there (k = 1), and the total
-// image keeps the interval mode's bounds: within 0.5 % of the 99th-percentile luminance of
-// k = 1 everywhere, 1 % per pixel above 1 % of that percentile.
-TEST(RenderedTotal, IntervalEightKeepsTheInterreflectedLightWithinThePlansError) {
-  const Scene scene = office();
-  View view = scene.views.front();
-  view.width = kSanitizedBuild ? 160 : 320;
-  view.height = kSanitizedBuild ? 90 : 180;
-  Renderer total(cpuDevice(), scene, {}, MeshOptions{});
-  Renderer direct(cpuDevice(), scene);
-  const RenderedView total1 = total.render(view, RenderOptions{1, 1, {}});
-  const RenderedView total8 = total.render(view, RenderOptions{8, 1, {}});
-  const RenderedView direct1 = direct.render(view, RenderOptions{1, 1, {}});
-  const RenderedView direct8 = direct.render(view, RenderOptions{8, 1, {}});
-  const auto luminanceY = [](const RgbImage& image, std::size_t i) {
-    return 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] +
-           0.0722 * image.rgb[i * 3 + 2];
-  };
-  const std::size_t n = total1.illuminance.values.size();
-  std::vector<double> sorted(n);
-  for (std::size_t i = 0; i < n; ++i) sorted[i] = luminanceY(total1.luminance, i);
-  const std::size_t at = static_cast<std::size_t>(0.99 * (n - 1));
-  std::nth_element(sorted.begin(), sorted.begin() + at, sorted.end());
-  const double p99 = sorted[at];
-  ASSERT_GT(p99, 0.0);
-  double worstIndirect = 0.0, worst = 0.0, worstRelative = 0.0;
-  std::size_t surface = 0, interpolated = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double e1 = total1.illuminance.values[i];
-    if (e1 <= 0.0) continue;  // a source or the view's edge
-    ++surface;
-    const double indirect1 = e1 - direct1.illuminance.values[i];
-    const double indirect8 = total8.illuminance.values[i] - direct8.illuminance.values[i];
-    ASSERT_GT(indirect1, 0.0);
-    // Float sums of about 1 000 lx: 1e-6 of the total on top of the interpolation's error.
-    const double error = std::max(0.0, std::abs(indirect8 - indirect1) - 1e-6 * e1) / indirect1;
-    worstIndirect = std::max(worstIndirect, error);
-    interpolated += std::abs(indirect8 - indirect1) > 1e-6 * e1;
-    const double y1 = luminanceY(total1.luminance, i), y8 = luminanceY(total8.luminance, i);
-    worst = std::max(worst, std::abs(y8 - y1));
-    if (y1 > 0.01 * p99) worstRelative = std::max(worstRelative, std::abs(y8 - y1) / y1);
-  }
-  std::printf(
-      "%s %d x %d, k = 8: interreflected light worst %.2e of its own (%zu of %zu pixels "
-      "interpolated); total worst %.4f %% of p99, %.4f %% per pixel above 1 %% of p99\n",
-      view.name.c_str(), view.width, view.height, worstIndirect, interpolated, surface,
-      100 * worst / p99, 100 * worstRelative);
-  EXPECT_LE(worstIndirect, IntervalPlan::kInterpolationError);
-  // The rule interpolates (measured: 17 % of the pixels at 320 × 180, 6 % at 160 × 90).
-  EXPECT_GT(interpolated, surface / 50);
-  EXPECT_LE(worst, 0.005 * p99);
-  EXPECT_LE(worstRelative, 0.01);
 }
 
 // A closed room of one grey paint with a panel on the ceiling shining down: the ceiling gets

@@ -347,34 +347,14 @@ struct IndirectField::State {
     return t;
   }
 
-  // The field's value at x (in the face's frame) on kept triangle t.
-  Eigen::Vector3d valueOn(int t, const Vec2& x) const {
-    const FieldTriangle& tri = triangles[t];
-    const std::array<double, 6> w = quadraticWeights(tri.barycentric(x));
-    Eigen::Vector3d e = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
-    return e;
-  }
-
-  Eigen::Vector3d segmentMiss(int t, const Vec3& a, const Vec3& b) const {
-    const FieldFace& face = faces[triangles[t].face];
-    const Vec2 la = face.local(a), lb = face.local(b);
-    return (valueOn(t, 0.5 * (la + lb)) - 0.5 * (valueOn(t, la) + valueOn(t, lb))).cwiseAbs();
-  }
-
-  // Barycentric: how far inside the last point's triangle a point must lie to be taken on it
-  // without a search, far above rounding, so that the search would find the same triangle.
-  static constexpr double kWellInside = 1e-9;
-
-  void evaluate(std::span<const FacePoint> points, std::span<float> channels, std::span<int> kept) {
+  void evaluate(std::span<const FacePoint> points, std::span<float> channels) {
     const auto start = Clock::now();
     const double reach = 1e-6;  // barycentric: how far outside its triangle a point may lie
     std::vector<int> leaf(points.size(), -1);
     std::vector<Vec2> local(points.size());
     std::vector<SamplePoint> exact;
     std::vector<std::size_t> exactAt;
-    std::fill(kept.begin(), kept.end(), -1);
-    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2, lastRoot = -1, lastLeaf = -1;
+    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2, lastRoot = -1;
     for (std::size_t i = 0; i < points.size(); ++i) {
       const FacePoint& p = points[i];
       int faceId = -1;
@@ -389,14 +369,6 @@ struct IndirectField::State {
       int t = -1;
       if (faceId >= 0) {
         local[i] = faces[faceId].local(p.position);
-        // Neighbouring points mostly share a triangle: the last one's, where it holds this one
-        // well inside (the search from the root would end there too).
-        if (lastLeaf >= 0 && triangles[lastLeaf].face == faceId &&
-            triangles[lastLeaf].state != TriangleState::Cut &&
-            triangles[lastLeaf].barycentric(local[i]).minCoeff() > kWellInside) {
-          leaf[i] = lastLeaf;
-          continue;
-        }
         // Neighbouring points mostly share a fan triangle: the last one's, where it holds this
         // one strictly inside (on an edge the search decides, so that a point's triangle does
         // not depend on the order of the points).
@@ -416,7 +388,6 @@ struct IndirectField::State {
         continue;
       }
       leaf[i] = descend(t, local[i]);
-      lastLeaf = leaf[i];
     }
     // Rounds: gather the open triangles the points reach, decide them, descend again.
     for (;;) {
@@ -442,9 +413,10 @@ struct IndirectField::State {
         exact.push_back(SamplePoint{points[i].position, faces[tri.face].normal, points[i].solid});
         continue;
       }
-      const Eigen::Vector3d e = valueOn(leaf[i], local[i]);
+      const std::array<double, 6> w = quadraticWeights(tri.barycentric(local[i]));
+      Eigen::Vector3d e = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
       for (int c = 0; c < 3; ++c) channels[i * 3 + c] = static_cast<float>(e[c]);
-      if (!kept.empty()) kept[i] = leaf[i];
     }
     // Points gathered one by one are kept by their exact position: the renders of one view
     // (another interval, the AOV and the image) ask for the same points again.
@@ -478,13 +450,8 @@ IndirectField::IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGat
 
 IndirectField::~IndirectField() = default;
 
-void IndirectField::evaluate(std::span<const FacePoint> points, std::span<float> channels,
-                             std::span<int> triangles) {
-  state_->evaluate(points, channels, triangles);
-}
-
-Eigen::Vector3d IndirectField::segmentMiss(int triangle, const Vec3& a, const Vec3& b) const {
-  return state_->segmentMiss(triangle, a, b);
+void IndirectField::evaluate(std::span<const FacePoint> points, std::span<float> channels) {
+  state_->evaluate(points, channels);
 }
 
 const IndirectFieldStats& IndirectField::stats() const {

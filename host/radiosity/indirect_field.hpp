@@ -78,14 +78,7 @@ class IndirectField {
   // The interreflected E (lx per channel) at each point, 3 values per point into `channels`:
   // interpolated on the element the point lies on, gathering the triangles it needs first;
   // gathered exactly where the point lies on no element (a face without a mesh).
-  // With `triangles` (one per point), each point's kept triangle, the one its value is
-  // interpolated on; -1 where it was gathered exactly.
-  void evaluate(std::span<const FacePoint> points, std::span<float> channels,
-                std::span<int> triangles = {});
-  // How far the straight line between the field's values at `a` and `b` (on kept triangle
-  // `triangle`, as evaluate() gave it for both) misses the field along the segment between them,
-  // lx per channel: the field is one quadratic there, so the miss is largest at the midpoint.
-  Eigen::Vector3d segmentMiss(int triangle, const Vec3& a, const Vec3& b) const;
+  void evaluate(std::span<const FacePoint> points, std::span<float> channels);
   const IndirectFieldStats& stats() const;
 
  private:

@@ -199,21 +199,18 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
   return out;
 }
 
-void IntervalPlan::interpolateBetween(const Interval& interval, std::span<float> values,
-                                      int channels) {
-  const double length = static_cast<double>(interval.b - interval.a);
-  for (std::size_t i = interval.a + 1; i < interval.b; ++i) {
-    const double t = (i - interval.a) / length;
-    for (int c = 0; c < channels; ++c) {
-      const double va = values[interval.a * channels + c];
-      const double vb = values[interval.b * channels + c];
-      values[i * channels + c] = static_cast<float>(va + t * (vb - va));
+void IntervalPlan::interpolate(std::span<float> values, int channels) const {
+  for (const Interval& interval : interpolated_) {
+    const double length = static_cast<double>(interval.b - interval.a);
+    for (std::size_t i = interval.a + 1; i < interval.b; ++i) {
+      const double t = (i - interval.a) / length;
+      for (int c = 0; c < channels; ++c) {
+        const double va = values[interval.a * channels + c];
+        const double vb = values[interval.b * channels + c];
+        values[i * channels + c] = static_cast<float>(va + t * (vb - va));
+      }
     }
   }
-}
-
-void IntervalPlan::interpolate(std::span<float> values, int channels) const {
-  for (const Interval& interval : interpolated_) interpolateBetween(interval, values, channels);
 }
 
 }  // namespace penumbra

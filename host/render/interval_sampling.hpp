@@ -67,16 +67,10 @@ class IntervalPlan {
   // in `values` (exact samples already filled).
   void interpolate(std::span<float> values, int channels) const;
 
+ private:
   struct Interval {
     std::size_t a, b;  // exact ends; a < b, same row
   };
-  // The intervals interpolate() fills, once next() has returned empty.
-  const std::vector<Interval>& interpolatedIntervals() const { return interpolated_; }
-  // Fills the samples between the interval's ends linearly from the ends' values, `channels`
-  // values per sample in `values`.
-  static void interpolateBetween(const Interval& interval, std::span<float> values, int channels);
-
- private:
   struct Context;  // what one call of next() reads
 
   void requestInterior(const Interval& interval, std::vector<std::size_t>& out);

@@ -198,16 +198,13 @@ struct Renderer::State {
   }
 
   // The interreflected light per channel at `samples` (3 floats per sample into `indirect`):
-  // from the field (with `triangles`, per sample, the field's kept triangle it lies on or -1),
-  // or gathered exactly at every sample.
+  // from the field, or gathered exactly at every sample.
   void indirectAt(const Camera& camera, const SampleLayer& layer,
                   const std::vector<std::size_t>& samples, bool exact, std::vector<float>& indirect,
-                  const std::function<void(std::size_t)>& done,
-                  std::vector<int>* triangles = nullptr) {
+                  const std::function<void(std::size_t)>& done) {
     std::vector<SamplePoint> points;
     std::vector<FacePoint> onFaces;
     std::vector<float> channels;
-    std::vector<int> kept;
     for (std::size_t start = 0; start < samples.size(); start += kBatch) {
       const std::size_t end = std::min(samples.size(), start + kBatch);
       points.clear();
@@ -227,79 +224,20 @@ struct Renderer::State {
             indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
       } else {
         channels.assign(onFaces.size() * 3, 0.0f);
-        kept.assign(triangles ? onFaces.size() : 0, -1);
-        field->evaluate(onFaces, channels, kept);
-        for (std::size_t j = start; j < end; ++j) {
+        field->evaluate(onFaces, channels);
+        for (std::size_t j = start; j < end; ++j)
           for (int c = 0; c < 3; ++c) indirect[samples[j] * 3 + c] = channels[(j - start) * 3 + c];
-          if (triangles) (*triangles)[samples[j]] = kept[j - start];
-        }
       }
       done(end - start);
     }
   }
 
-  // Whether the interreflected light may be interpolated along an interval of the plan (its
-  // ends' values in `indirect`, their field triangles in `triangles`): both ends on one kept
-  // triangle of the field, and the straight line between the ends' values within the plan's
-  // kInterpolationError of the field at every sample between, per channel, relative to the
-  // smaller end. Along the segment between the ends the field is one quadratic, which the line
-  // misses most at the midpoint (IndirectField::segmentMiss). The samples are evenly spaced on
-  // the screen, not along the segment: perspective moves a sample along it by a share of at
-  // most (√r − 1)/(√r + 1) of the interval, r the ratio of the ends' depths, so that share of
-  // the change between the ends is added to the miss.
-  bool indirectInterpolates(const Camera& camera, const SampleLayer& layer,
-                            const IntervalPlan::Interval& interval,
-                            const std::vector<int>& triangles,
-                            const std::vector<float>& indirect) const {
-    const int triangle = triangles[interval.a];
-    if (triangle < 0 || triangles[interval.b] != triangle) return false;
-    const Vec3 a = surfacePoint(camera, layer.visibility, interval.a).position,
-               b = surfacePoint(camera, layer.visibility, interval.b).position;
-    const double depthA = camera.depth(a), depthB = camera.depth(b);
-    const double root = std::sqrt(std::max(depthA, depthB) / std::min(depthA, depthB));
-    const double shift = (root - 1.0) / (root + 1.0);
-    const Eigen::Vector3d miss = field->segmentMiss(triangle, a, b);
-    for (int c = 0; c < 3; ++c) {
-      const double ea = indirect[interval.a * 3 + c], eb = indirect[interval.b * 3 + c];
-      if (miss[c] + shift * std::abs(eb - ea) >
-          IntervalPlan::kInterpolationError * std::min(ea, eb))
-        return false;
-    }
-    return true;
-  }
-
-  // The interreflected light at the samples the plan interpolates, from the field at the exact
-  // ones (`indirect`, `triangles`): an interval is interpolated where indirectInterpolates says
-  // so; otherwise the field is taken at its middle sample and each half decided the same way,
-  // so that every interpolated piece lies on one kept triangle of the field.
-  void indirectBetween(const Camera& camera, const SampleLayer& layer, const IntervalPlan& plan,
-                       std::vector<int>& triangles, std::vector<float>& indirect) {
-    std::vector<IntervalPlan::Interval> open = plan.interpolatedIntervals(), halves;
-    std::vector<std::size_t> middles;
-    while (!open.empty()) {
-      halves.clear();
-      middles.clear();
-      for (const IntervalPlan::Interval& interval : open) {
-        if (indirectInterpolates(camera, layer, interval, triangles, indirect)) {
-          IntervalPlan::interpolateBetween(interval, indirect, 3);
-        } else {
-          const std::size_t m = (interval.a + interval.b) / 2;
-          middles.push_back(m);
-          for (const IntervalPlan::Interval half :
-               {IntervalPlan::Interval{interval.a, m}, IntervalPlan::Interval{m, interval.b}})
-            if (half.b - half.a >= 2) halves.push_back(half);
-        }
-      }
-      indirectAt(
-          camera, layer, middles, false, indirect, [](std::size_t) {}, &triangles);
-      std::swap(open, halves);
-    }
-  }
-
-  // Adds the interreflected light (`indirect`, lx per channel, 3 per sample) to the layer's
-  // surface samples: to E, and times the face's reflectance over π to the luminance.
-  void addIndirect(SampleLayer& layer, const std::vector<std::size_t>& surface,
-                   const std::vector<float>& indirect) const {
+  // Adds the interreflected light to the layer's surface samples (its direct light complete).
+  void addIndirect(const Camera& camera, SampleLayer& layer,
+                   const std::vector<std::size_t>& surface, bool exact,
+                   const std::function<void(std::size_t)>& done) {
+    std::vector<float> indirect(layer.visibility.faceIds.size() * 3, 0.0f);  // lx per channel
+    indirectAt(camera, layer, surface, exact, indirect, done);
     for (std::size_t i : surface) {
       const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
       const Vec3 e(indirect[i * 3], indirect[i * 3 + 1], indirect[i * 3 + 2]);
@@ -351,6 +289,7 @@ struct Renderer::State {
     const std::size_t work = surface.size() * (interreflection ? 2 : 1);
     stats.shadingSeconds += secondsSince(start);
 
+    start = Clock::now();
     const int columns = classColumns();
     std::vector<ShadowClass> classes(n * columns, ShadowClass::Unlit);
     std::size_t done = 0;
@@ -358,40 +297,23 @@ struct Renderer::State {
       done += count;
       if (progress) progress(std::min(done, work), work);
     };
-    // The interreflected light from the field is taken where the direct light is computed
-    // exactly, and between them where it may be interpolated (indirectInterpolates).
-    const bool fromField = interreflection && !exactIndirect;
-    std::vector<float> indirect(interreflection ? n * 3 : 0, 0.0f);  // lx per channel
-    std::vector<int> triangles(fromField ? n : 0, -1);
-    const IndirectFieldStats before = field ? field->stats() : IndirectFieldStats{};
-    const auto computeExactly = [&](const std::vector<std::size_t>& samples) {
-      auto partStart = Clock::now();
-      evaluate(camera, layer, samples, classes, advance);
-      stats.illuminanceSeconds += secondsSince(partStart);
-      stats.exactSamples += samples.size();
-      if (fromField) {
-        partStart = Clock::now();
-        indirectAt(camera, layer, samples, false, indirect, advance, &triangles);
-        stats.indirectSeconds += secondsSince(partStart);
-      }
-    };
-    computeExactly(plan.firstPass());
+    const std::vector<std::size_t>& first = plan.firstPass();
+    evaluate(camera, layer, first, classes, advance);
+    stats.exactSamples += first.size();
     // The plan checks what the image shows (RGB luminance) and the E AOV.
     const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
     for (std::vector<std::size_t> round = plan.next(classes, columns, checked); !round.empty();
-         round = plan.next(classes, columns, checked))
-      computeExactly(round);
-    start = Clock::now();
+         round = plan.next(classes, columns, checked)) {
+      evaluate(camera, layer, round, classes, advance);
+      stats.exactSamples += round.size();
+    }
     plan.interpolate(layer.illuminance, 1);
     plan.interpolate(layer.rgb, 3);
     stats.illuminanceSeconds += secondsSince(start);
     if (interreflection) {
       start = Clock::now();
-      if (fromField)
-        indirectBetween(camera, layer, plan, triangles, indirect);
-      else
-        indirectAt(camera, layer, surface, true, indirect, advance);
-      addIndirect(layer, surface, indirect);
+      const IndirectFieldStats before = field->stats();
+      addIndirect(camera, layer, surface, exactIndirect, advance);
       stats.gatheredSamples += exactIndirect
                                    ? surface.size()
                                    : field->stats().nodes - before.nodes +
