@@ -5,7 +5,9 @@
 // pixels above 1 % of that percentile, the share of samples computed exactly, the render's wall
 // and CPU time (each the best of R; no files written; CPU time, of every thread, is steadier than
 // wall time on a shared machine), the direct light's time at k = 1 (direct1_s) and the
-// interreflected light's at k (indirectk_s). With interreflection the renderer's field of
+// interreflected light's at k (indirectk_s), and below each view the stages of the best k = 1
+// and k renders (RenderStats: visibility, the direct light with the interval plan, the
+// interreflected light, shading; wall). With interreflection the renderer's field of
 // interreflected light (radiosity/indirect_field.hpp) is shared by every render of the scene:
 // first1_s is the view's first full-size render (k = 1, gathering what the field lacks for it),
 // field_nodes and field_s what the field has gathered and spent so far (the warm-up included);
@@ -131,6 +133,14 @@ int main(int argc, char** argv) {
         exact.cpuSeconds / sampled.cpuSeconds, exact.view.stats.illuminanceSeconds,
         sampled.view.stats.indirectSeconds, field ? field->nodes : 0, field ? field->seconds : 0.0,
         sampled.view.stats.gatheredSamples);
+    for (const auto& [interval, timed] : {std::pair{1, &exact}, std::pair{k, &sampled}}) {
+      const RenderStats& stats = timed->view.stats;
+      fmt::print(
+          "  k = {}: visibility {:.3f} s, direct {:.3f} s, interreflected {:.3f} s, "
+          "shading {:.3f} s (wall)\n",
+          interval, stats.visibilitySeconds, stats.illuminanceSeconds, stats.indirectSeconds,
+          stats.shadingSeconds);
+    }
   }
   return 0;
 }
