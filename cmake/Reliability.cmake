@@ -27,7 +27,8 @@ if(PENUMBRA_SANITIZE)
   if(PENUMBRA_SANITIZE MATCHES "address" AND PENUMBRA_SANITIZE MATCHES "undefined")
     # UBSan's object-size check, beside ASan: ASan's redzones already catch an access past a heap,
     # stack or global object at run time, while the check's instrumentation keeps clang from
-    # inlining Eigen's expression templates, which made the host tests several times slower.
+    # inlining Eigen's expression templates, which makes the host tests several times slower
+    # (docs/reliability.md).
     add_compile_options(-fno-sanitize=object-size)
   endif()
   # Every program that links the host library (penumbra, the tests, the fuzzers, the benches)
