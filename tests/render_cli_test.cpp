@@ -145,6 +145,10 @@ TEST(RenderCli, TheRadiancePictureReadsBackByRadiancesRules) {
   if (r.status == 1 && r.err.find("device") != std::string::npos)
     GTEST_SKIP() << "no OpenCL device: " << r.err;
   ASSERT_EQ(r.status, 0) << r.err;
+  // The table has no material: the render says it reflects nothing, as `grid` does.
+  EXPECT_NE(r.err.find("1 solid without a material reflects no light (black): table"),
+            std::string::npos)
+      << r.err;
   const RadiancePicture picture = readRadiancePicture(dir.path() / "out" / "corner.hdr");
   EXPECT_EQ(picture.value("FORMAT"), "32-bit_rle_rgbe");
   EXPECT_EQ(picture.value("EXPOSURE"), "1");

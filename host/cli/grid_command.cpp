@@ -1,7 +1,6 @@
 #include "cli/grid_command.hpp"
 
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include <chrono>
 #include <cstdio>
@@ -9,6 +8,7 @@
 #include <optional>
 
 #include "cli/exit_status.hpp"
+#include "cli/interreflection_notes.hpp"
 #include "cli/progress.hpp"
 #include "cli/scene_warnings.hpp"
 #include "cli/version.hpp"
@@ -49,26 +49,6 @@ class StagedGridFiles : public GridStream {
   std::optional<GridFileWriter> files_;
 };
 
-// Light reaches these solids, but without a material they reflect none of it.
-void warnAboutBlackSolids(const RunReport& report) {
-  if (!report.interreflection || report.interreflection->blackSolids.empty()) return;
-  const std::vector<std::string>& names = report.interreflection->blackSolids;
-  fmt::print(stderr,
-             "penumbra: warning: {} solid{} without a material reflect{} no light (black): {}\n",
-             names.size(), names.size() == 1 ? "" : "s", names.size() == 1 ? "s" : "",
-             fmt::join(names, ", "));
-}
-
-// The dense transfer was asked for, but its mesh was past the dense limit: links took over.
-void noteLinksPastDenseLimit(const RunReport& report, const MeshOptions& mesh) {
-  if (!report.interreflection || report.interreflection->denseElements == 0) return;
-  const InterreflectionReport& r = *report.interreflection;
-  fmt::print(stderr,
-             "penumbra: the mesh has {} elements at --element-size {} m, more than the {} the "
-             "dense transfer takes: hierarchical links at --link-error {} instead ({} links)\n",
-             r.denseElements, mesh.elementSize, mesh.maxElements, r.linkError, r.links);
-}
-
 int run(const GridOptions& options) {
   const auto start = Clock::now();
   // Fail on an unusable output path before the long part.
@@ -89,8 +69,8 @@ int run(const GridOptions& options) {
   report.setupSeconds = secondsSince(setupStart);
   if (!options.quiet) {
     fmt::print(stderr, "penumbra: {} on {}\n", options.scene.string(), report.device);
-    warnAboutBlackSolids(report);
-    noteLinksPastDenseLimit(report, options.estimator.mesh);
+    warnAboutBlackSolids(report.interreflection);
+    noteLinksPastDenseLimit(report.interreflection, options.estimator.mesh);
   }
 
   // The files are written while the grids are computed (so that no grid is ever held whole), into

@@ -7,6 +7,7 @@
 
 #include "cl/device.hpp"
 #include "cli/exit_status.hpp"
+#include "cli/interreflection_notes.hpp"
 #include "cli/render_progress.hpp"
 #include "cli/scene_warnings.hpp"
 #include "cli/version.hpp"
@@ -73,6 +74,10 @@ int run(const RenderCommandOptions& options) {
                     estimator.interreflection ? std::optional(estimator.mesh) : std::nullopt);
   if (const InterreflectionReport* solved = renderer.interreflection())
     report.interreflection = *solved;
+  if (!options.quiet) {
+    warnAboutBlackSolids(report.interreflection);
+    noteLinksPastDenseLimit(report.interreflection, estimator.mesh);
+  }
   report.luminaires = luminaireReports(scene);
   for (const View* view : views) {
     RenderProgress progress(!options.quiet, view->name, view->height);
