@@ -284,7 +284,6 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   PnCentre8 centre;
   int k = 0;
   int8 small_lanes = 0;
-  float8 e_small = 0.0f;
   const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
   if (any_small && pn_all(small_lanes)) {
     for (int i = 1; i < m; ++i) {
@@ -309,8 +308,7 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   const float8 e =
       select((float8)(0.0f), sum.s + sum.c, in_front8(face, pts->px, pts->py, pts->pz));
   if (!any_small) return e;
-  e_small = whole_small_face8(pts, face, k, &centre, tables, &em);
-  return select(e, e_small, small_lanes);
+  return select(e, whole_small_face8(pts, face, k, &centre, tables, &em), small_lanes);
 }
 
 /* unoccluded_face8's sum with each term taken from P (centre null) or relative to the small
