@@ -193,6 +193,7 @@ nlohmann::json interreflectionJson(const InterreflectionReport& r) {
       {"transfer_reused", r.transferReused},
       {"refinement_capped", r.refinementCapped},
       {"transfer", r.linkError > 0.0 ? "hierarchical links" : "dense"},
+      {"final_gather", r.linearGather ? "linear within elements" : "uniform elements"},
       {"link_error", r.linkError},
       {"links", r.links},
       {"dense_elements_past_limit", r.denseElements},

@@ -235,6 +235,7 @@ InterreflectionReport readInterreflection(const nlohmann::json& summary) {
   r.residual = j.value("relative_residual", 0.0);
   r.transferReused = j.value("transfer_reused", false);
   r.refinementCapped = j.value("refinement_capped", false);
+  r.linearGather = j.value("final_gather", std::string()) == "linear within elements";
   r.linkError = j.value("link_error", 0.0);
   r.links = j.value("links", std::size_t{0});
   r.denseElements = j.value("dense_elements_past_limit", std::size_t{0});

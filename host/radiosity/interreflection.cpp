@@ -38,6 +38,7 @@ Eigen::VectorXd photometricRows(const Eigen::MatrixX3d& rgb) {
 // The elements as unit sources, the kernel for them, and the transfer between them.
 std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const Scene& scene,
                                                   const SurfaceMesh& mesh,
+                                                  const MeshOptions& options,
                                                   const EngineOptions& engine) {
   const auto start = Clock::now();
   auto geometry = std::make_shared<GeometryTransfer>();
@@ -46,6 +47,11 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
   geometry->gather = std::make_unique<IlluminanceEngine>(device, geometry->elements, engine);
   geometry->transfer =
       elementTransfer(*geometry->gather, mesh, FarFieldRule{}, geometry->firstElement);
+  if (options.linearGather &&
+      mesh.elements.size() * 4 * std::max<std::size_t>(1, scene.solids.size()) <=
+          options.linearGatherLimit)
+    geometry->slopes = std::make_unique<SlopeGather>(device, scene, mesh, engine,
+                                                     Tolerance::forSceneSize(scene.size()).length);
   geometry->seconds = secondsSince(start);
   return geometry;
 }
@@ -91,11 +97,12 @@ Interreflection::Interreflection(compute::Device& device, const Scene& scene,
   if (cache) geometry_ = cache->find(key);
   report_.transferReused = geometry_ != nullptr;
   if (!geometry_) {
-    geometry_ = computeTransfer(device, scene, mesh_, engine);
+    geometry_ = computeTransfer(device, scene, mesh_, mesh, engine);
     report_.transferSeconds = geometry_->seconds;
     if (cache) cache->insert(key, geometry_);
   }
 
+  report_.linearGather = geometry_->slopes != nullptr;
   start = Clock::now();
   solution_ = solveRadiosity(geometry_->transfer, mesh_, direct_);
   report_.residual = solution_.residual;
@@ -270,6 +277,7 @@ Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> poi
       }
     }
   }
+  if (geometry_->slopes) e += geometry_->slopes->correction(points, luminance);
   return e;
 }
 

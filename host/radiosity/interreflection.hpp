@@ -48,6 +48,9 @@ struct InterreflectionReport {
   std::size_t links = 0;                 // hierarchical links; 0 for the dense transfer
   double linkError = 0.0;                // the links' error bound; 0 for the dense transfer
   std::vector<std::string> blackSolids;  // reached by light, no material: black
+  // The final gather took each element's luminance linear across it (luminance_slopes.hpp);
+  // otherwise uniform at its mean (MeshOptions::linearGather).
+  bool linearGather = false;
 
   // Above 0: the dense transfer was asked for, but its mesh had this many elements before any
   // refinement, more than MeshOptions::maxElements; hierarchical links at the default bound

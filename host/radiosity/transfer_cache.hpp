@@ -14,6 +14,7 @@
 #include "engine/illuminance_engine.hpp"
 #include "radiosity/element_tree.hpp"
 #include "radiosity/hierarchical_transfer.hpp"
+#include "radiosity/luminance_slopes.hpp"
 #include "radiosity/surface_mesh.hpp"
 #include "scene/scene.hpp"
 
@@ -26,6 +27,8 @@ struct GeometryTransfer {
   std::size_t firstElement = 0;               // element j is source firstElement + j
   std::unique_ptr<IlluminanceEngine> gather;  // the kernel on `elements`
   Eigen::MatrixXd transfer;                   // elementTransfer
+  // The final gather's slopes within the elements (luminance_slopes.hpp).
+  std::unique_ptr<SlopeGather> slopes;
   // Hierarchical: the element trees (whose leaves are the mesh) and the links between them.
   std::unique_ptr<ElementTree> tree;
   std::unique_ptr<HierarchicalTransfer> links;
