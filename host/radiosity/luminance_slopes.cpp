@@ -9,18 +9,13 @@
 #include <stdexcept>
 #include <utility>
 
+#include "geometry/primitives.hpp"
 #include "kernels/shared_types.h"
 #include "radiosity/element_transfer.hpp"
 
 namespace penumbra {
 
 namespace {
-
-// Two unit vectors spanning a plane of unit normal n.
-std::pair<Vec3, Vec3> planeAxes(const Vec3& n) {
-  const Vec3 u = (std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(n).normalized();
-  return {u, n.cross(u)};
-}
 
 // Values per work-item of PN_LANES points, at most this many faces a launch (as the transfer's
 // launches: about 2^22 values).
@@ -54,7 +49,7 @@ SlopeStencils slopeStencils(const SurfaceMesh& mesh) {
     tbb::parallel_for(std::size_t{0}, members.size(), [&](std::size_t a) {
       const std::size_t i = members[a];
       const SurfaceElement& e = mesh.elements[i];
-      const auto [u, v] = planeAxes(e.polygon.normal());
+      const auto [u, v] = frameAround(e.polygon.normal(), Vec3::UnitX());
       Eigen::Matrix2d normal = Eigen::Matrix2d::Zero();
       std::vector<std::pair<int, Eigen::Vector2d>> near;
       for (std::size_t j : members) {
@@ -202,9 +197,14 @@ Eigen::MatrixXd SlopeGather::correction(std::span<const SamplePoint> points,
     }
     jobs.push_back(std::move(job));
   }
-  std::vector<std::size_t> parent(cells_.polygons.size());
+  // Each cell's rise above its element's mean, per column: the same for every point.
+  Eigen::MatrixXd rise(static_cast<Eigen::Index>(cells_.polygons.size()), columns);
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t c = cells_.start[i]; c < cells_.start[i + 1]; ++c) parent[c] = i;
+    for (std::size_t c = cells_.start[i]; c < cells_.start[i + 1]; ++c)
+      for (Eigen::Index k = 0; k < columns; ++k)
+        rise(static_cast<Eigen::Index>(c), k) = slopes[static_cast<std::size_t>(k)]
+                                                    .row(static_cast<Eigen::Index>(i))
+                                                    .dot(cells_.offset[c].transpose());
 
   while (!jobs.empty()) {
     std::vector<Job> again;
@@ -239,17 +239,14 @@ Eigen::MatrixXd SlopeGather::correction(std::span<const SamplePoint> points,
           continue;
         }
         for (std::size_t k = 0; k < job.cells.size(); ++k) {
-          const std::size_t cell = static_cast<std::size_t>(job.cells[k]);
-          const auto i = static_cast<Eigen::Index>(parent[cell]);
+          const auto cell = static_cast<Eigen::Index>(job.cells[k]);
           for (std::size_t lane = 0; lane < PN_LANES; ++lane) {
             const double weight = job.weight[k][lane];
             if (weight == 0.0) continue;
             const double unit =
                 weight * values[(static_cast<std::size_t>(start[w]) + k) * PN_LANES + lane];
             const auto p = static_cast<Eigen::Index>(job.item * PN_LANES + lane);
-            for (Eigen::Index c = 0; c < columns; ++c)
-              e(p, c) += unit * slopes[static_cast<std::size_t>(c)].row(i).dot(
-                                    cells_.offset[cell].transpose());
+            e.row(p) += unit * rise.row(cell);
           }
         }
       }
