@@ -270,9 +270,17 @@ IlluminanceEngine::KernelOutput IlluminanceEngine::launch(std::span<const Sample
 }
 
 void IlluminanceEngine::illuminanceBySourceBatches(
-    std::span<const std::span<const SamplePoint>> batches, const BatchValues& consume) {
-  const auto prepareBatch = [this, batches](std::size_t b) {
-    return prepare(batches[b], true, false, nullptr);
+    std::span<const std::span<const SamplePoint>> batches, const BatchValues& consume,
+    const BatchSources& computes) {
+  const auto prepareBatch = [this, batches, &computes](std::size_t b) {
+    std::vector<char> skipFace;
+    if (computes) {
+      const std::vector<EmittingFaceShadows>& faces = state_->shadows.faces;
+      skipFace.resize(faces.size());
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        skipFace[f] = computes(b, static_cast<std::size_t>(faces[f].source)) ? 0 : 1;
+    }
+    return prepare(batches[b], true, false, nullptr, skipFace);
   };
   std::future<PreparedLaunch> next;
   if (!batches.empty()) next = std::async(std::launch::async, prepareBatch, std::size_t{0});
@@ -290,7 +298,8 @@ void IlluminanceEngine::illuminanceBySourceBatches(
 
 IlluminanceEngine::PreparedLaunch IlluminanceEngine::prepare(std::span<const SamplePoint> points,
                                                              bool bySource, bool withClasses,
-                                                             const LinkedLaunch* linked) const {
+                                                             const LinkedLaunch* linked,
+                                                             std::span<const char> skipFace) const {
   PreparedLaunch p;
   p.points = points;
   p.bySource = bySource;
@@ -333,7 +342,7 @@ IlluminanceEngine::PreparedLaunch IlluminanceEngine::prepare(std::span<const Sam
                                          FaceLinks{p.linkStart, linked->faces, p.receiver},
                                          state_->options.culling, margin)
                    : buildPatchTable(state_->shadows, state_->volumes, state_->packed, points,
-                                     p.workItems, state_->options.culling, margin);
+                                     p.workItems, state_->options.culling, margin, skipFace);
   return p;
 }
 

@@ -59,11 +59,14 @@ class IlluminanceEngine {
   // illuminanceBySource for each of `batches` in turn, handed to `consume` in order with the
   // batch's index: the same values as one call per batch. The host's part of the next batch
   // (its patch table) is built on a second thread while the kernel computes this one, so that
-  // the tail of either leaves no core idle.
+  // the tail of either leaves no core idle. With `computes`, batch b's values of a source s for
+  // which computes(b, s) is false are not computed (their share of the kernel's and the host's
+  // work is skipped) and are not to be read.
   using BatchValues =
       std::function<void(std::size_t batch, const std::vector<float>& values, std::size_t stride)>;
+  using BatchSources = std::function<bool(std::size_t batch, std::size_t source)>;
   void illuminanceBySourceBatches(std::span<const std::span<const SamplePoint>> batches,
-                                  const BatchValues& consume);
+                                  const BatchValues& consume, const BatchSources& computes = {});
   // E from single source faces at groups of PN_LANES points (links): the points are work-items of
   // PN_LANES in order (the caller pads each group as it likes), and work-item w takes the faces
   // faces[k], k in [start[w], start[w + 1]) (start: one entry per work-item and one more, ending
@@ -101,7 +104,7 @@ class IlluminanceEngine {
   // download). launch() is run(prepare(...)).
   struct PreparedLaunch;
   PreparedLaunch prepare(std::span<const SamplePoint> points, bool bySource, bool withClasses,
-                         const LinkedLaunch* linked) const;
+                         const LinkedLaunch* linked, std::span<const char> skipFace = {}) const;
   KernelOutput run(PreparedLaunch& prepared);
 
   // What a call asks for beyond E: E per source, the shadow classes (illuminance() asks for

@@ -207,18 +207,26 @@ CasterGroups casterGroups(const SceneShadows& shadows) {
 
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
                            const KernelScene& packed, std::span<const SamplePoint> points,
-                           std::size_t workItems, bool culling, double margin) {
+                           std::size_t workItems, bool culling, double margin,
+                           std::span<const char> skipFace) {
   const std::size_t faceCount = shadows.faces.size();
+  const auto skip = [skipFace](std::size_t f) { return !skipFace.empty() && skipFace[f] != 0; };
   PatchTable table;
   resizePopulated(table.entries, workItems * faceCount);
   if (!culling) {
     for (std::size_t k = 0; k < table.entries.size(); ++k)
-      table.entries[k] =
-          PnPatchFace{0, -1, shadows.faces[k % faceCount].emits ? PN_CLASS_B : PN_CLASS_C, 0};
+      table.entries[k] = PnPatchFace{
+          0, -1,
+          shadows.faces[k % faceCount].emits && !skip(k % faceCount) ? PN_CLASS_B : PN_CLASS_C, 0};
     return table;
   }
   const CasterGroups casters = casterGroups(shadows);
   const std::size_t casterCount = casters.members.size();
+  // Caster groups whose faces are all skipped: no search.
+  std::vector<char> groupSkipped(casterCount);
+  for (std::size_t c = 0; c < casterCount; ++c)
+    groupSkipped[c] = std::all_of(casters.members[c].begin(), casters.members[c].end(), skip);
+  const auto skipped = [&](std::size_t c) { return groupSkipped[c] != 0; };
   // Each group fills its own entries and a private candidate list; the lists are joined in
   // group order afterwards, so the table does not depend on the thread count.
   const std::size_t groups = (workItems + kItemsPerGroup - 1) / kItemsPerGroup;
@@ -238,6 +246,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
   tbb::parallel_for(std::size_t{0}, supers * casterCount, [&](std::size_t sc) {
     const std::size_t firstItem = sc / casterCount * kGroupsPerSuper * kItemsPerGroup;
     const std::size_t items = std::min(kGroupsPerSuper * kItemsPerGroup, workItems - firstItem);
+    if (skipped(sc % casterCount)) return;
     const FaceVolumes& faceVolumes = volumes[casters.volumesOf[sc % casterCount]];
     std::vector<int> all(faceVolumes.solid.size());
     for (std::size_t k = 0; k < all.size(); ++k) all[k] = static_cast<int>(k);
@@ -257,14 +266,15 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
     std::vector<BoundingBox> itemBoxes(items);
     for (std::size_t w = 0; w < items; ++w)
       itemBoxes[w] = boxOf(points, (firstItem + w) * PN_LANES, PN_LANES);
-    // Faces that emit nothing (Source::castersOnly): class C.
+    // Faces that emit nothing (Source::castersOnly) and those skipped: class C.
     for (std::size_t f = 0; f < faceCount; ++f)
-      if (!shadows.faces[f].emits)
+      if (!shadows.faces[f].emits || skip(f))
         for (std::size_t w = firstItem; w < firstItem + items; ++w)
           table.entries[w * faceCount + f] = PnPatchFace{0, 0, PN_CLASS_C, 0};
     std::vector<int> near, found;
     const int groupSolid = commonSolid(points, firstItem * PN_LANES, items * PN_LANES);
     for (std::size_t c = 0; c < casterCount; ++c) {
+      if (skipped(c)) continue;
       const FaceVolumes& faceVolumes = volumes[casters.volumesOf[c]];
       // A caster that hides the faces from a whole super-group or group (a wall between them
       // and another room's light) hides them from each of its work-items.
@@ -285,6 +295,7 @@ PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolu
         for (std::size_t f : casters.members[c]) {
           const EmittingFaceShadows& face = shadows.faces[f];
           PnPatchFace& entry = table.entries[w * faceCount + f];
+          if (skip(f)) continue;  // class C above
           if (patchSeesNothing(points, w * PN_LANES, face, emission[f])) {
             entry = PnPatchFace{0, 0, PN_CLASS_C, 0};
             continue;

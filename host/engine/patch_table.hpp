@@ -41,10 +41,13 @@ FaceVolumes flattenVolumes(const EmittingFaceShadows& face);
 // give every lane 0 (the volumes are in host/shadow/shadow_volume.hpp), and skipping the face
 // keeps a room's cost from growing with the lights of the rooms beyond its walls. With culling
 // off every entry lists all occluders of its face with class B: the plain path.
-// `volumes` is flattenVolumes(shadows).
+// `volumes` is flattenVolumes(shadows). Faces f with skipFace[f] set (when skipFace is not
+// empty) get class PN_CLASS_C without a search: the kernel gives them E = 0 (a caller that needs
+// only the other faces' values).
 PatchTable buildPatchTable(const SceneShadows& shadows, std::span<const FaceVolumes> volumes,
                            const KernelScene& packed, std::span<const SamplePoint> points,
-                           std::size_t workItems, bool culling, double margin);
+                           std::size_t workItems, bool culling, double margin,
+                           std::span<const char> skipFace = {});
 
 // Links: work-item w of a linked launch takes the source faces faces[k] for k in
 // [start[w], start[w + 1]) (start has one entry more than there are work-items).

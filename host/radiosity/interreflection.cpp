@@ -11,6 +11,7 @@
 #include "radiosity/element_transfer.hpp"
 #include "radiosity/node_light.hpp"
 #include "radiosity/sun_on_elements.hpp"
+#include "radiosity/transfer_row_sums.hpp"
 #include "scene/daylight.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -45,8 +46,9 @@ std::shared_ptr<GeometryTransfer> computeTransfer(compute::Device& device, const
   geometry->elements = elementSceneSharingCasters(scene, mesh);
   geometry->firstElement = mesh.casterBlocks.size();
   geometry->gather = std::make_unique<IlluminanceEngine>(device, geometry->elements, engine);
-  geometry->transfer =
-      elementTransfer(*geometry->gather, mesh, FarFieldRule{}, geometry->firstElement);
+  const std::optional<Eigen::VectorXd> rowSums = transferRowSums(device, scene, mesh, engine);
+  geometry->transfer = elementTransfer(*geometry->gather, mesh, FarFieldRule{},
+                                       geometry->firstElement, rowSums ? &*rowSums : nullptr);
   if (options.linearGather &&
       mesh.elements.size() * 4 * std::max<std::size_t>(1, scene.solids.size()) <=
           options.linearGatherLimit)

@@ -97,13 +97,18 @@ bool outsideRoom(const Room& room, const Vec3& p, double tolerance) {
   return (p.array() <= -reach).any() || (p.array() >= room.size.array() + reach).any();
 }
 
-bool skyOnHost(const Scene& scene) {
-  if (!scene.sky || !scene.room) return false;
-  if (scene.sky->model == SkyModel::CieGeneral) return true;
+bool solidReachesOutsideRoom(const Scene& scene) {
+  if (!scene.room) return false;
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
   return std::any_of(scene.solids.begin(), scene.solids.end(), [&](const Solid& solid) {
     return reachesOutside(solid, *scene.room, tolerance);
   });
+}
+
+bool skyOnHost(const Scene& scene) {
+  if (!scene.sky || !scene.room) return false;
+  if (scene.sky->model == SkyModel::CieGeneral) return true;
+  return solidReachesOutsideRoom(scene);
 }
 
 Scene skyFacesScene(const Scene& scene) {

@@ -42,6 +42,10 @@ std::vector<const Opening*> skyOpenings(const Scene& scene);
 // outer box (the interior box grown by the wall's thickness) or a `cie-general` sky (patches).
 bool skyOnHost(const Scene& scene);
 
+// Whether a solid of `scene` reaches out of its room's outer box (the interior box grown by the
+// wall's thickness): an obstruction, an overhang, a fin. False without a room.
+bool solidReachesOutsideRoom(const Scene& scene);
+
 // Whether `p` lies outside `room`: not strictly inside its outer box (the interior box grown by
 // the wall's thickness, less `tolerance`). The walls' outer faces and every solid beyond them
 // (an obstruction) are outside; the reveals of an opening and the room's interior are not.
