@@ -33,7 +33,7 @@ PACKAGES=(
 run_example() {
   local display=()
   if [[ -z "${DISPLAY:-}" ]] && command -v xvfb-run >/dev/null; then
-    display=(xvfb-run -a -s "-screen 0 1920x1080x24")
+    display=(xvfb-run -a -s "-screen 0 1920x1080x24 -noreset")
   fi
   "${display[@]}" "${BUILD}/penumbra" sweep studies/window-width.yaml -o out/window-width
 }

@@ -47,7 +47,7 @@ inline constexpr const char* kPlotFooter =
     "The scene is read again from the path in summary.json; E on the room's surfaces is\n"
     "computed on the OpenCL device (--device). The pictures are rendered through X: where\n"
     "there is no display, run penumbra under a virtual one:\n"
-    "  xvfb-run -a -s \"-screen 0 1920x1080x24\" penumbra plot out/office\n"
+    "  xvfb-run -a -s \"-screen 0 1920x1080x24 -noreset\" penumbra plot out/office\n"
     "The files appear together when all are done, never half-written.\n"
     "\n"
     "Examples:\n"

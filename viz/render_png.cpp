@@ -15,7 +15,7 @@ std::string displayUnavailable() {
   if (display != nullptr && *display != '\0') return "";
   return "plots are rendered through X and no display is set ($DISPLAY is empty); on a machine "
          "without one, run the command under a virtual X server:\n"
-         "  xvfb-run -a -s \"-screen 0 1920x1080x24\" penumbra ...";
+         "  xvfb-run -a -s \"-screen 0 1920x1080x24 -noreset\" penumbra ...";
 }
 
 void requireDisplay() {

@@ -13,7 +13,9 @@ namespace fs = std::filesystem;
 // display, and one inherited from the submitting shell is not valid there: use a virtual one
 // where xvfb-run is installed. `-n`: each job tries a server number of its own first, far from
 // where `xvfb-run -a` starts (99): two of them starting at once on one node can otherwise pick
-// the same number, and the loser then talks to the winner's server and VTK aborts.
+// the same number, and the loser then talks to the winner's server and VTK aborts. `-noreset`:
+// the server would otherwise reset when its last client leaves, and a chart's window opened
+// during the reset gets no connection (VTK aborts likewise).
 std::string preamble(const std::string& directives, bool display) {
   std::string text = "#!/bin/bash\n" + directives +
                      "# Written by `penumbra sweep --slurm` (docs/cluster.md).\n"
@@ -27,7 +29,7 @@ std::string preamble(const std::string& directives, bool display) {
     text +=
         "if command -v xvfb-run >/dev/null; then\n"
         "  run=(xvfb-run -a -n \"$((1000 + ${SLURM_JOB_ID:-$$} % 30000))\" -s \"-screen 0 "
-        "1920x1080x24\")\n"
+        "1920x1080x24 -noreset\")\n"
         "fi\n";
   }
   return text;
