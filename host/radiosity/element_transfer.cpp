@@ -28,11 +28,7 @@ Eigen::MatrixXd zeroTransfer(std::size_t n) {
 
 // The scene's solids with the blocks (if `blocks`) and then the elements as sources.
 Scene elementSources(const Scene& scene, const SurfaceMesh& mesh, bool blocks) {
-  Scene elements;
-  elements.file = scene.file;
-  elements.materials = scene.materials;
-  elements.solids = scene.solids;
-  elements.room = scene.room;
+  Scene elements = solidsOf(scene);
   const std::size_t first = blocks ? mesh.casterBlocks.size() : 0;
   elements.sources.reserve(first + mesh.elements.size());
   for (std::size_t b = 0; b < first; ++b) {

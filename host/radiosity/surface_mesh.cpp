@@ -171,6 +171,19 @@ SurfaceMesh refineMesh(const SurfaceMesh& mesh, const std::vector<char>& split, 
   return refined;
 }
 
+bool reflectsLight(const Scene& scene, const Solid& solid) {
+  return solid.material >= 0 && scene.materials[solid.material].reflectance.maxCoeff() > 0.0;
+}
+
+Scene solidsOf(const Scene& scene) {
+  Scene solids;
+  solids.file = scene.file;
+  solids.materials = scene.materials;
+  solids.solids = scene.solids;
+  solids.room = scene.room;
+  return solids;
+}
+
 std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::string>& blackSolids) {
   const double tolerance = Tolerance::forSceneSize(scene.size()).length;
 
@@ -181,8 +194,7 @@ std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::str
       faces.push_back({s, f, shape.facePolygon(f)});
   }
   const auto reflective = [&](const FaceRef& face) {
-    const int m = scene.solids[face.solid].material;
-    return m >= 0 && scene.materials[m].reflectance.maxCoeff() > 0.0;
+    return reflectsLight(scene, scene.solids[face.solid]);
   };
 
   // Reached faces: those that see a source, then those that see a reached reflective face.

@@ -88,6 +88,14 @@ struct SurfaceMesh {
 using SurfacePiece = SurfaceElement;
 std::vector<SurfacePiece> surfacePieces(const Scene& scene, std::vector<std::string>& blackSolids);
 
+// Whether a solid's faces reflect light: it has a material of ρ > 0 in some channel. Faces that
+// do not are black: they get no elements.
+bool reflectsLight(const Scene& scene, const Solid& solid);
+
+// The scene's solids, materials and room without its sources, grids or views: what the
+// interreflection's kernel scenes start from before adding sources of their own.
+Scene solidsOf(const Scene& scene);
+
 // Whether polygons a and b can exchange light: each has a vertex more than `tolerance` in front
 // of the other's plane.
 bool canExchange(const ConvexPolygon& a, const ConvexPolygon& b, double tolerance);

@@ -9,27 +9,11 @@
 
 namespace penumbra {
 
-namespace {
-
-// The scene's solids, materials and room, no sources.
-Scene solidsOf(const Scene& scene) {
-  Scene solids;
-  solids.file = scene.file;
-  solids.materials = scene.materials;
-  solids.solids = scene.solids;
-  solids.room = scene.room;
-  return solids;
-}
-
-}  // namespace
-
 std::optional<Scene> unseenByElements(const Scene& scene) {
   if (!scene.room) return std::nullopt;
   Scene unseen = solidsOf(scene);
   for (const Solid& solid : scene.solids) {
-    // The mesh's rule (surface_mesh.cpp): a face reflects where its material has ρ > 0.
-    if (solid.material >= 0 && scene.materials[solid.material].reflectance.maxCoeff() > 0.0)
-      continue;
+    if (reflectsLight(scene, solid)) continue;
     for (int f = 0; f < static_cast<int>(solid.shape.faces().size()); ++f) {
       Source face;
       face.name = solid.name + ".face-" + std::to_string(f);
