@@ -3,7 +3,8 @@
 // steep light comes back within the tolerance of its own value, with triangles cut where it
 // bends; nothing is interpolated across a face edge; points on no element and in triangles
 // still uneven at the depth limit are gathered exactly; the value at a point does not depend
-// on the points asked for before it.
+// on the points asked for before it; with the defaults, triangles are cut to the least depth and
+// the points along a face's edge are gathered exactly.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -66,7 +67,11 @@ TEST(IndirectField, ALinearLightComesBackExactlyFromTheElementsTriangles) {
     return Eigen::Vector3d(100 + 20 * x - 5 * y, 80 + 3 * y, 60 + 10 * x);
   }};
   const SurfaceMesh mesh = twoFaces();
-  IndirectField field(mesh, 3.0, light.gather());
+  // The triangles alone: no least depth, no band gathered exactly.
+  FieldOptions options;
+  options.minDepth = 0;
+  options.boundaryBand = 0.0;
+  IndirectField field(mesh, 3.0, light.gather(), options);
   const std::vector<FacePoint> points = floorPoints(40);
   std::vector<float> channels(points.size() * 3);
   field.evaluate(points, channels);
@@ -97,6 +102,8 @@ TEST(IndirectField, ASteepLightIsCutDownToItsToleranceWithinEachFace) {
   const SurfaceMesh mesh = twoFaces();
   FieldOptions options;
   options.maxDepth = 8;
+  options.minDepth = 0;
+  options.boundaryBand = 0.0;
   IndirectField field(mesh, 3.0, light.gather(), options);
   std::vector<FacePoint> points = floorPoints(100);
   for (int j = 0; j < 20; ++j)
@@ -127,6 +134,41 @@ TEST(IndirectField, ASteepLightIsCutDownToItsToleranceWithinEachFace) {
                 1e-6 * channels[i * 3 + 1]);
 }
 
+// With the defaults: every triangle is cut to the least depth (a square's two fan triangles into
+// 32 of 0.125 m legs) and the points within the band along the floor's edge are gathered one by
+// one; the linear light still comes back from the triangles everywhere else.
+TEST(IndirectField, TrianglesAreCutToTheLeastDepthAndTheFacesEdgeBandIsGathered) {
+  Counted light{[](const SamplePoint& p) {
+    const double x = p.position.x(), y = p.position.y();
+    return Eigen::Vector3d(100 + 20 * x - 5 * y, 80 + 3 * y, 60 + 10 * x);
+  }};
+  const SurfaceMesh mesh = twoFaces();
+  const FieldOptions options;
+  ASSERT_EQ(options.minDepth, 2);
+  IndirectField field(mesh, 3.0, light.gather(), options);
+  const std::vector<FacePoint> points = floorPoints(40);
+  std::vector<float> channels(points.size() * 3);
+  field.evaluate(points, channels);
+  std::size_t inBand = 0;
+  double worst = 0.0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& x = points[i].position;
+    const double fromEdge = std::min({x.x(), 2.0 - x.x(), x.y(), 1.0 - x.y()});
+    if (fromEdge < options.boundaryBand) ++inBand;
+    const Eigen::Vector3d truth = light.light(SamplePoint{x, Vec3::UnitZ(), 0});
+    for (int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(channels[i * 3 + c] - truth[c]) / truth[c]);
+  }
+  EXPECT_LE(worst, 3e-5);
+  // 40 × 80 points 0.025 m apart: the outer ring of points, 0.0125 m from the edge, and the
+  // next, 0.0375 m from it, lie in the 0.04 m band.
+  EXPECT_EQ(inBand, 2u * (80 + 40) * 2 - 16);
+  EXPECT_EQ(field.stats().pointsGathered, inBand);
+  EXPECT_EQ(field.stats().triangles, 16u * (1 + 4 + 16));
+  // The lattice of the depth-2 triangles' corners and midpoints: every 0.0625 m.
+  EXPECT_EQ(field.stats().nodes, 33u * 17u);
+}
+
 TEST(IndirectField, PointsOnNoElementOrUnevenAtTheDepthLimitAreGatheredExactly) {
   // A light with a kink across the floor: no quadratic fits it, so the triangles the kink crosses
   // stay uneven down to the depth limit, and their points are gathered; off the mesh too.
@@ -136,6 +178,7 @@ TEST(IndirectField, PointsOnNoElementOrUnevenAtTheDepthLimitAreGatheredExactly) 
   const SurfaceMesh mesh = twoFaces();
   FieldOptions options;
   options.maxDepth = 2;
+  options.boundaryBand = 0.0;
   IndirectField field(mesh, 3.0, light.gather(), options);
   std::vector<FacePoint> points = floorPoints(50);
   points.push_back(FacePoint{Vec3(2.5, 0.5, 0.0), 0, 0});  // beyond the floor's elements

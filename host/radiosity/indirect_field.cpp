@@ -28,6 +28,8 @@ struct IndirectField::State {
     int columns = 1, rows = 1;
     std::vector<std::vector<int>> cells;
     std::vector<int> roots;  // its fan triangles, while the grid is built
+    // The edges of the face's elements that no other element of the face lies beyond.
+    std::vector<std::array<Vec2, 2>> boundary;
 
     Vec2 local(const Vec3& p) const { return Vec2((p - origin).dot(u), (p - origin).dot(v)); }
   };
@@ -47,6 +49,9 @@ struct IndirectField::State {
     int face = -1;
     int depth = 0;
     int children = -1;  // the first of four consecutive triangles once cut
+    // A fan triangle's: the edges of its face's elements' boundary (FieldFace::boundary) that
+    // come within FieldOptions::boundaryBand of it.
+    std::vector<int> nearBoundary;
     TriangleState state = TriangleState::Open;
 
     // (λ_a, λ_b, λ_c) of a point in the face's frame.
@@ -126,7 +131,16 @@ struct IndirectField::State {
         quantum(Tolerance::kRelativeInput * std::max(sceneSize, 1.0)),
         nudge(kNudgeInKernelTolerances * Tolerance::kernelLength(sceneSize)) {
     for (const SurfaceElement& element : mesh->elements) addElement(element);
-    for (FieldFace& face : faces) buildGrid(face);
+    std::vector<std::vector<int>> roots;
+    for (FieldFace& face : faces) {
+      roots.push_back(face.roots);
+      buildGrid(face);
+    }
+    if (options.boundaryBand > 0.0) {
+      for (const SurfaceElement& element : mesh->elements) findBoundary(element);
+      for (std::size_t f = 0; f < faces.size(); ++f)
+        for (int t : roots[f]) listNearBoundary(static_cast<int>(f), t);
+    }
   }
 
   FieldFace& faceOf(const SurfaceElement& element) {
@@ -286,6 +300,61 @@ struct IndirectField::State {
     return away.x() * f.u + away.y() * f.v;
   }
 
+  static double distanceToSegment(const Vec2& x, const std::array<Vec2, 2>& segment) {
+    const Vec2 d = segment[1] - segment[0];
+    const double length2 = d.squaredNorm();
+    const double t = length2 > 0.0 ? std::clamp((x - segment[0]).dot(d) / length2, 0.0, 1.0) : 0.0;
+    return (x - (segment[0] + t * d)).norm();
+  }
+
+  // The element's edges on its face's boundary: probes a nudge outside the edge at a quarter,
+  // a half and three quarters of it, any of which lies on no element of the face (an edge partly
+  // on the boundary counts whole, which only gathers more points exactly).
+  void findBoundary(const SurfaceElement& element) {
+    if (element.polygon.empty()) return;
+    const auto it = faceIndex.find({element.solid, element.face});
+    if (it == faceIndex.end()) return;
+    FieldFace& face = faces[it->second];
+    std::vector<Vec2> p;
+    for (const Vec3& x : element.polygon.vertices()) p.push_back(face.local(x));
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec2 a = p[i], b = p[(i + 1) % p.size()];
+      const Vec2 along = b - a;
+      if (along.norm() <= quantum) continue;
+      const Vec2 out = Vec2(along.y(), -along.x()).normalized();  // counter-clockwise polygon
+      for (double at : {0.25, 0.5, 0.75}) {
+        double outside = 0.0;
+        if (root(it->second, a + at * along + nudge * out, outside) < 0 || outside > 1e-9) {
+          face.boundary.push_back({a, b});
+          break;
+        }
+      }
+    }
+  }
+
+  // The boundary edges within the band of fan triangle t: those within the band of the ball
+  // round its corners.
+  void listNearBoundary(int faceId, int t) {
+    FieldTriangle& tri = triangles[t];
+    const Vec2 centre = (tri.corner[0] + tri.corner[1] + tri.corner[2]) / 3.0;
+    double radius = 0.0;
+    for (const Vec2& c : tri.corner) radius = std::max(radius, (c - centre).norm());
+    const std::vector<std::array<Vec2, 2>>& boundary = faces[faceId].boundary;
+    for (std::size_t k = 0; k < boundary.size(); ++k)
+      if (distanceToSegment(centre, boundary[k]) <= radius + options.boundaryBand)
+        tri.nearBoundary.push_back(static_cast<int>(k));
+  }
+
+  // Whether x, in fan triangle t, lies within FieldOptions::boundaryBand of its face's boundary.
+  bool nearBoundary(int t, const Vec2& x) const {
+    const FieldTriangle& tri = triangles[t];
+    for (int k : tri.nearBoundary)
+      if (distanceToSegment(x, faces[tri.face].boundary[static_cast<std::size_t>(k)]) <
+          options.boundaryBand)
+        return true;
+    return false;
+  }
+
   // Gathers every node of the open triangles in `open` that is not gathered yet.
   void gatherNodes(const std::vector<int>& open) {
     std::vector<int> wanted;
@@ -320,7 +389,7 @@ struct IndirectField::State {
       const double miss = (m.indirect - line).cwiseAbs().maxCoeff();
       if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m.indirect), 1e-300));
     }
-    if (worst <= options.tolerance) {
+    if (worst <= options.tolerance && tri.depth >= options.minDepth) {
       tri.state = TriangleState::Kept;
       return;
     }
@@ -381,7 +450,7 @@ struct IndirectField::State {
         }
         lastRoot = t;
       }
-      if (t < 0 || outside > reach) {
+      if (t < 0 || outside > reach || nearBoundary(t, local[i])) {
         exactAt.push_back(i);
         exact.push_back(
             SamplePoint{p.position, faceId >= 0 ? faces[faceId].normal : Vec3::UnitZ(), p.solid});

@@ -279,7 +279,17 @@ Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> poi
       }
     }
   }
-  if (geometry_->slopes) e += geometry_->slopes->correction(points, luminance);
+  if (geometry_->slopes) {
+    // One share of each element's slope for every column gathered, set by the solved light per
+    // channel, so that the gather stays linear in the luminance: the parts of the light (the
+    // sun's, the channels) sum to the whole.
+    if (slopeShare_.size() == 0) {
+      Eigen::MatrixXd channels = solution_.luminance;
+      if (sunChannels_.rows() > 0) channels += sunChannels_;
+      slopeShare_ = geometry_->slopes->shares(channels);
+    }
+    e += geometry_->slopes->correction(points, luminance, slopeShare_);
+  }
   return e;
 }
 

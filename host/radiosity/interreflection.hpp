@@ -127,7 +127,10 @@ class Interreflection {
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
   Eigen::VectorXd sunLuminance_;                // the sun's part of it; empty without a sun
   Eigen::MatrixX3d sunChannels_;                // the same per channel
-  Eigen::VectorXd sunDirect_;                   // lx, element-average direct sunlight; empty
+  // The share of each element's slope in the final gather (SlopeGather::shares), set by the
+  // solved luminance per channel at the first gather; empty before.
+  Eigen::VectorXd slopeShare_;
+  Eigen::VectorXd sunDirect_;  // lx, element-average direct sunlight; empty
   std::vector<char> outside_;  // per element: outside the room (outsideRoom), in a daylit scene
   bool anyOutside_ = false;    // some element is outside the room
   // τ of the openings between the elements outside and inside (scene/daylight.hpp,

@@ -98,29 +98,46 @@ ElementCells elementCells(const SurfaceMesh& mesh, double tolerance) {
   return cells;
 }
 
-std::vector<Eigen::MatrixX3d> limitedSlopes(const SlopeStencils& stencils,
-                                            const ElementCells& cells,
-                                            const Eigen::MatrixXd& luminance) {
+namespace {
+
+// Element i's least-squares slope of column c (m⁻¹ per unit of L).
+Vec3 fittedSlope(const SlopeStencils& stencils, const Eigen::MatrixXd& luminance, std::size_t i,
+                 Eigen::Index c) {
+  const double own = luminance(static_cast<Eigen::Index>(i), c);
+  Vec3 g = Vec3::Zero();
+  for (std::size_t k = stencils.start[i]; k < stencils.start[i + 1]; ++k)
+    g += stencils.weight[k] * (luminance(stencils.neighbour[k], c) - own);
+  return g;
+}
+
+}  // namespace
+
+Eigen::VectorXd slopeShares(const SlopeStencils& stencils, const ElementCells& cells,
+                            const Eigen::MatrixXd& reference) {
+  const Eigen::Index n = reference.rows();
+  Eigen::VectorXd share = Eigen::VectorXd::Ones(n);
+  for (Eigen::Index c = 0; c < reference.cols(); ++c)
+    for (Eigen::Index i = 0; i < n; ++i) {
+      const auto e = static_cast<std::size_t>(i);
+      const Vec3 g = fittedSlope(stencils, reference, e, c);
+      for (std::size_t k = cells.start[e]; k < cells.start[e + 1]; ++k) {
+        const double rise = g.dot(cells.offset[k]);
+        if (rise < 0.0) share[i] = std::min(share[i], std::max(0.0, -reference(i, c) / rise));
+      }
+    }
+  return share;
+}
+
+std::vector<Eigen::MatrixX3d> sharedSlopes(const SlopeStencils& stencils,
+                                           const Eigen::MatrixXd& luminance,
+                                           const Eigen::VectorXd& share) {
   const Eigen::Index n = luminance.rows();
   std::vector<Eigen::MatrixX3d> slopes(static_cast<std::size_t>(luminance.cols()),
                                        Eigen::MatrixX3d::Zero(n, 3));
-  for (Eigen::Index c = 0; c < luminance.cols(); ++c) {
-    Eigen::MatrixX3d& slope = slopes[static_cast<std::size_t>(c)];
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const auto e = static_cast<std::size_t>(i);
-      const double own = luminance(i, c);
-      Vec3 g = Vec3::Zero();
-      for (std::size_t k = stencils.start[e]; k < stencils.start[e + 1]; ++k)
-        g += stencils.weight[k] * (luminance(stencils.neighbour[k], c) - own);
-      // The largest share of the slope that leaves no cell's value below zero.
-      double keep = 1.0;
-      for (std::size_t k = cells.start[e]; k < cells.start[e + 1]; ++k) {
-        const double rise = g.dot(cells.offset[k]);
-        if (rise < 0.0) keep = std::min(keep, -own / rise);
-      }
-      slope.row(i) = (std::max(keep, 0.0) * g).transpose();
-    }
-  }
+  for (Eigen::Index c = 0; c < luminance.cols(); ++c)
+    for (Eigen::Index i = 0; i < n; ++i)
+      slopes[static_cast<std::size_t>(c)].row(i) =
+          (share[i] * fittedSlope(stencils, luminance, static_cast<std::size_t>(i), c)).transpose();
   return slopes;
 }
 
@@ -145,13 +162,18 @@ SlopeGather::SlopeGather(compute::Device& device, const Scene& scene, const Surf
 
 SlopeGather::~SlopeGather() = default;
 
+Eigen::VectorXd SlopeGather::shares(const Eigen::MatrixXd& reference) const {
+  return slopeShares(stencils_, cells_, reference);
+}
+
 Eigen::MatrixXd SlopeGather::correction(std::span<const SamplePoint> points,
-                                        const Eigen::MatrixXd& luminance) {
+                                        const Eigen::MatrixXd& luminance,
+                                        const Eigen::VectorXd& share) {
   const Eigen::Index columns = luminance.cols();
   Eigen::MatrixXd e = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), columns);
   const std::size_t n = balls_.size();
   if (n == 0 || points.empty()) return e;
-  const std::vector<Eigen::MatrixX3d> slopes = limitedSlopes(stencils_, cells_, luminance);
+  const std::vector<Eigen::MatrixX3d> slopes = sharedSlopes(stencils_, luminance, share);
 
   // Each work-item's points (PN_LANES in a row, the last repeated) and the elements near any of
   // them, with each lane's weight of their slopes (nearWeight).
