@@ -227,8 +227,9 @@ void Interreflection::addSun(const Eigen::MatrixX3d& luminance) {
 Interreflection::~Interreflection() = default;
 
 Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
-                                        const Eigen::MatrixXd& luminance) {
-  if (crossing_ == 1.0 || !room_) return gatherElements(points, luminance);
+                                        const Eigen::MatrixXd& luminance,
+                                        const Eigen::MatrixXd& sunPart) {
+  if (crossing_ == 1.0 || !room_) return gatherElements(points, luminance, sunPart);
   std::vector<SamplePoint> inside, outside;
   std::vector<std::size_t> insideAt, outsideAt;
   for (std::size_t p = 0; p < points.size(); ++p) {
@@ -241,20 +242,24 @@ Eigen::MatrixXd Interreflection::gather(std::span<const SamplePoint> points,
     for (std::size_t k = 0; k < at.size(); ++k)
       e.row(static_cast<Eigen::Index>(at[k])) = part.row(static_cast<Eigen::Index>(k));
   };
-  if (!inside.empty()) place(gatherElements(inside, luminance), insideAt);
+  if (!inside.empty()) place(gatherElements(inside, luminance, sunPart), insideAt);
   if (!outside.empty()) {
-    Eigen::MatrixXd seenOutside = luminance;
-    for (Eigen::Index i = 0; i < seenOutside.rows(); ++i)
-      seenOutside.row(i) *= outside_[static_cast<std::size_t>(i)]
-                                ? (crossing_ > 0.0 ? 1.0 / crossing_ : 0.0)
-                                : crossing_;
-    place(gatherElements(outside, seenOutside), outsideAt);
+    Eigen::MatrixXd seenOutside = luminance, sunSeenOutside = sunPart;
+    for (Eigen::Index i = 0; i < seenOutside.rows(); ++i) {
+      const double seen = outside_[static_cast<std::size_t>(i)]
+                              ? (crossing_ > 0.0 ? 1.0 / crossing_ : 0.0)
+                              : crossing_;
+      seenOutside.row(i) *= seen;
+      if (sunSeenOutside.size() > 0) sunSeenOutside.row(i) *= seen;
+    }
+    place(gatherElements(outside, seenOutside, sunSeenOutside), outsideAt);
   }
   return e;
 }
 
 Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> points,
-                                                const Eigen::MatrixXd& luminance) {
+                                                const Eigen::MatrixXd& luminance,
+                                                const Eigen::MatrixXd& sunPart) {
   Eigen::MatrixXd e =
       Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), luminance.cols());
   if (!geometry_) return e;
@@ -280,21 +285,34 @@ Eigen::MatrixXd Interreflection::gatherElements(std::span<const SamplePoint> poi
     }
   }
   if (geometry_->slopes) {
-    // One share of each element's slope for every column gathered, set by the solved light per
-    // channel, so that the gather stays linear in the luminance: the parts of the light (the
-    // sun's, the channels) sum to the whole.
+    // Each solved part of the light (the sources' and sky's, the sun's, which is solved alone)
+    // takes one share of each element's slope, set by that part's luminance in all three
+    // channels, for every column gathered: so the gather stays linear within a part, the parts
+    // sum to the whole, and a part's light is the same whether or not the other is there.
     if (slopeShare_.size() == 0) {
-      Eigen::MatrixXd channels = solution_.luminance;
-      if (sunChannels_.rows() > 0) channels += sunChannels_;
-      slopeShare_ = geometry_->slopes->shares(channels);
+      slopeShare_ = geometry_->slopes->shares(solution_.luminance);
+      if (sunChannels_.rows() > 0) sunSlopeShare_ = geometry_->slopes->shares(sunChannels_);
     }
-    e += geometry_->slopes->correction(points, luminance, slopeShare_);
+    const Eigen::Index n = luminance.cols();
+    const bool sun = sunPart.size() > 0;
+    Eigen::MatrixXd parts(luminance.rows(), sun ? 2 * n : n), share(luminance.rows(), parts.cols());
+    parts.leftCols(n) = sun ? Eigen::MatrixXd(luminance - sunPart) : luminance;
+    share.leftCols(n) = slopeShare_.replicate(1, n);
+    if (sun) {
+      parts.rightCols(n) = sunPart;
+      share.rightCols(n) = sunSlopeShare_.replicate(1, n);
+    }
+    const Eigen::MatrixXd correction = geometry_->slopes->correction(points, parts, share);
+    e += correction.leftCols(n);
+    if (sun) e += correction.rightCols(n);
   }
   return e;
 }
 
 std::vector<double> Interreflection::indirect(std::span<const SamplePoint> points) {
-  const Eigen::MatrixXd e = gather(points, luminance_);
+  Eigen::MatrixXd sunPart;
+  if (sunLuminance_.size() > 0) sunPart = sunLuminance_;
+  const Eigen::MatrixXd e = gather(points, luminance_, sunPart);
   return std::vector<double>(e.data(), e.data() + e.size());
 }
 
@@ -317,7 +335,14 @@ InterreflectedIlluminance Interreflection::indirectParts(std::span<const SampleP
       if (!outside_[static_cast<std::size_t>(i)]) fromOutside[i] = 0.0;
     luminance.col(luminance.cols() - 1) = fromOutside;
   }
-  const Eigen::MatrixXd e = gather(points, luminance);
+  // The sun's part of each column: all of the sun's column, none of the outside's.
+  Eigen::MatrixXd sunPart;
+  if (sun) {
+    sunPart = Eigen::MatrixXd::Zero(luminance.rows(), luminance.cols());
+    sunPart.col(0) = sunLuminance_;
+    sunPart.col(1) = sunLuminance_;
+  }
+  const Eigen::MatrixXd e = gather(points, luminance, sunPart);
   const auto column = [&](Eigen::Index c) {
     return std::vector<double>(e.col(c).data(), e.col(c).data() + e.rows());
   };
@@ -329,9 +354,12 @@ InterreflectedIlluminance Interreflection::indirectParts(std::span<const SampleP
 
 std::vector<Eigen::Vector3d> Interreflection::indirectChannels(
     std::span<const SamplePoint> points) {
-  Eigen::MatrixXd luminance = solution_.luminance;
-  if (sunChannels_.rows() > 0) luminance += sunChannels_;
-  const Eigen::MatrixXd e = gather(points, luminance);
+  Eigen::MatrixXd luminance = solution_.luminance, sunPart;
+  if (sunChannels_.rows() > 0) {
+    luminance += sunChannels_;
+    sunPart = sunChannels_;
+  }
+  const Eigen::MatrixXd e = gather(points, luminance, sunPart);
   std::vector<Eigen::Vector3d> channels(points.size());
   for (std::size_t p = 0; p < points.size(); ++p)
     channels[p] = e.row(static_cast<Eigen::Index>(p)).transpose();

@@ -108,10 +108,13 @@ class Interreflection {
   // element j at 1 cd/m²: points × columns, lx. `luminance` as the room sees it (the elements
   // outside at τ times their own); at points outside the room each element's light comes as seen
   // from there: the elements outside at their own, those inside at τ times theirs.
-  Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance);
+  // `sunPart`: the sun's part of each column of `luminance` (the same shape), or empty where the
+  // scene has no sun; the final gather's slopes take each part's own shares.
+  Eigen::MatrixXd gather(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance,
+                         const Eigen::MatrixXd& sunPart);
   // The same sum with no regard to the openings' glazing.
   Eigen::MatrixXd gatherElements(std::span<const SamplePoint> points,
-                                 const Eigen::MatrixXd& luminance);
+                                 const Eigen::MatrixXd& luminance, const Eigen::MatrixXd& sunPart);
   // The element-average direct light and the mesh's part of the report, once the mesh is final.
   void finishMesh(const Scene& scene, const HostLight& host, const Eigen::MatrixX3d& nodeDirect,
                   double elementSize, Clock::time_point start);
@@ -127,9 +130,10 @@ class Interreflection {
   Eigen::VectorXd luminance_;                   // cd/m² per element, photometric
   Eigen::VectorXd sunLuminance_;                // the sun's part of it; empty without a sun
   Eigen::MatrixX3d sunChannels_;                // the same per channel
-  // The share of each element's slope in the final gather (SlopeGather::shares), set by the
-  // solved luminance per channel at the first gather; empty before.
-  Eigen::VectorXd slopeShare_;
+  // The share of each element's slope in the final gather (SlopeGather::shares), set at the
+  // first gather by the solved luminance per channel without the sun, and by the sun's; empty
+  // before.
+  Eigen::VectorXd slopeShare_, sunSlopeShare_;
   Eigen::VectorXd sunDirect_;  // lx, element-average direct sunlight; empty
   std::vector<char> outside_;  // per element: outside the room (outsideRoom), in a daylit scene
   bool anyOutside_ = false;    // some element is outside the room

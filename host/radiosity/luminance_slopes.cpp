@@ -130,14 +130,15 @@ Eigen::VectorXd slopeShares(const SlopeStencils& stencils, const ElementCells& c
 
 std::vector<Eigen::MatrixX3d> sharedSlopes(const SlopeStencils& stencils,
                                            const Eigen::MatrixXd& luminance,
-                                           const Eigen::VectorXd& share) {
+                                           const Eigen::MatrixXd& share) {
   const Eigen::Index n = luminance.rows();
   std::vector<Eigen::MatrixX3d> slopes(static_cast<std::size_t>(luminance.cols()),
                                        Eigen::MatrixX3d::Zero(n, 3));
   for (Eigen::Index c = 0; c < luminance.cols(); ++c)
     for (Eigen::Index i = 0; i < n; ++i)
       slopes[static_cast<std::size_t>(c)].row(i) =
-          (share[i] * fittedSlope(stencils, luminance, static_cast<std::size_t>(i), c)).transpose();
+          (share(i, c) * fittedSlope(stencils, luminance, static_cast<std::size_t>(i), c))
+              .transpose();
   return slopes;
 }
 
@@ -168,7 +169,7 @@ Eigen::VectorXd SlopeGather::shares(const Eigen::MatrixXd& reference) const {
 
 Eigen::MatrixXd SlopeGather::correction(std::span<const SamplePoint> points,
                                         const Eigen::MatrixXd& luminance,
-                                        const Eigen::VectorXd& share) {
+                                        const Eigen::MatrixXd& share) {
   const Eigen::Index columns = luminance.cols();
   Eigen::MatrixXd e = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(points.size()), columns);
   const std::size_t n = balls_.size();

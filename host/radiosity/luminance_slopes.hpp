@@ -59,13 +59,13 @@ ElementCells elementCells(const SurfaceMesh& mesh, double tolerance);
 Eigen::VectorXd slopeShares(const SlopeStencils& stencils, const ElementCells& cells,
                             const Eigen::MatrixXd& reference);
 
-// Per column c of `luminance` (N elements × C), each element's slope times its share:
-// slopes[c].row(i). Linear in `luminance` for given shares, so that the gather of a sum of
-// luminances (the sky's and the sun's, the RGB channels and their photometric sum) is the sum of
-// their gathers.
+// Per column c of `luminance` (N elements × C), each element's slope times its share in that
+// column, share(i, c): slopes[c].row(i). Linear in `luminance` for given shares, so that the
+// gather of a sum of luminances (the RGB channels and their photometric sum) is the sum of their
+// gathers.
 std::vector<Eigen::MatrixX3d> sharedSlopes(const SlopeStencils& stencils,
                                            const Eigen::MatrixXd& luminance,
-                                           const Eigen::VectorXd& share);
+                                           const Eigen::MatrixXd& share);
 
 // What the slopes add to the gather of uniform elements, at each point: Σ over the elements
 // near it of Σ over their cells of E_cell(point) · slope · offset, per column of `luminance`.
@@ -82,9 +82,9 @@ class SlopeGather {
 
   // The shares (slopeShares) for the solved luminance `reference`.
   Eigen::VectorXd shares(const Eigen::MatrixXd& reference) const;
-  // Per column of `luminance`, with each element's slope scaled by `share`.
+  // Per column c of `luminance`, with element i's slope scaled by share(i, c).
   Eigen::MatrixXd correction(std::span<const SamplePoint> points, const Eigen::MatrixXd& luminance,
-                             const Eigen::VectorXd& share);
+                             const Eigen::MatrixXd& share);
 
  private:
   SlopeStencils stencils_;
