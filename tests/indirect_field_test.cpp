@@ -4,7 +4,8 @@
 // bends; nothing is interpolated across a face edge; points on no element and in triangles
 // still uneven at the depth limit are gathered exactly; the value at a point does not depend
 // on the points asked for before it; with the defaults, triangles are cut to the least depth and
-// the points along a face's edge are gathered exactly.
+// the points along a face's edge are gathered exactly, or, given the scene's solids, along its
+// concave edges only.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -134,39 +135,79 @@ TEST(IndirectField, ASteepLightIsCutDownToItsToleranceWithinEachFace) {
                 1e-6 * channels[i * 3 + 1]);
 }
 
+// The linear light of the band tests, and the floor's 40 × 80 points 0.025 m apart evaluated on
+// a field over twoFaces() with the defaults: the worst relative error against the light and how
+// many points lie within the band of the edges `fromEdge` measures.
+Eigen::Vector3d linearLight(const SamplePoint& p) {
+  const double x = p.position.x(), y = p.position.y();
+  return Eigen::Vector3d(100 + 20 * x - 5 * y, 80 + 3 * y, 60 + 10 * x);
+}
+
+struct BandCheck {
+  double worst = 0.0;
+  std::size_t inBand = 0;
+  IndirectFieldStats stats;
+};
+
+BandCheck floorInBand(const std::function<double(const Vec3&)>& fromEdge,
+                      InsideSolid insideSolid = {}) {
+  Counted light{linearLight};
+  const FieldOptions options;
+  const SurfaceMesh mesh = twoFaces();  // the field keeps a pointer to it
+  IndirectField field(mesh, 3.0, light.gather(), options, std::move(insideSolid));
+  const std::vector<FacePoint> points = floorPoints(40);
+  std::vector<float> channels(points.size() * 3);
+  field.evaluate(points, channels);
+  BandCheck check;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Vec3& x = points[i].position;
+    if (fromEdge(x) < options.boundaryBand) ++check.inBand;
+    const Eigen::Vector3d truth = linearLight(SamplePoint{x, Vec3::UnitZ(), 0});
+    for (int c = 0; c < 3; ++c)
+      check.worst = std::max(check.worst, std::abs(channels[i * 3 + c] - truth[c]) / truth[c]);
+  }
+  check.stats = field.stats();
+  return check;
+}
+
 // With the defaults: every triangle is cut to the least depth (a square's two fan triangles into
 // 32 of 0.125 m legs) and the points within the band along the floor's edge are gathered one by
 // one; the linear light still comes back from the triangles everywhere else.
 TEST(IndirectField, TrianglesAreCutToTheLeastDepthAndTheFacesEdgeBandIsGathered) {
-  Counted light{[](const SamplePoint& p) {
-    const double x = p.position.x(), y = p.position.y();
-    return Eigen::Vector3d(100 + 20 * x - 5 * y, 80 + 3 * y, 60 + 10 * x);
-  }};
-  const SurfaceMesh mesh = twoFaces();
-  const FieldOptions options;
-  ASSERT_EQ(options.minDepth, 2);
-  IndirectField field(mesh, 3.0, light.gather(), options);
-  const std::vector<FacePoint> points = floorPoints(40);
-  std::vector<float> channels(points.size() * 3);
-  field.evaluate(points, channels);
-  std::size_t inBand = 0;
-  double worst = 0.0;
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const Vec3& x = points[i].position;
-    const double fromEdge = std::min({x.x(), 2.0 - x.x(), x.y(), 1.0 - x.y()});
-    if (fromEdge < options.boundaryBand) ++inBand;
-    const Eigen::Vector3d truth = light.light(SamplePoint{x, Vec3::UnitZ(), 0});
-    for (int c = 0; c < 3; ++c)
-      worst = std::max(worst, std::abs(channels[i * 3 + c] - truth[c]) / truth[c]);
-  }
-  EXPECT_LE(worst, 3e-5);
-  // 40 × 80 points 0.025 m apart: the outer ring of points, 0.0125 m from the edge, and the
-  // next, 0.0375 m from it, lie in the 0.04 m band.
-  EXPECT_EQ(inBand, 2u * (80 + 40) * 2 - 16);
-  EXPECT_EQ(field.stats().pointsGathered, inBand);
-  EXPECT_EQ(field.stats().triangles, 16u * (1 + 4 + 16));
+  ASSERT_EQ(FieldOptions{}.minDepth, 2);
+  const BandCheck check = floorInBand([](const Vec3& x) {
+    return std::min({x.x(), 2.0 - x.x(), x.y(), 1.0 - x.y()});
+  });
+  EXPECT_LE(check.worst, 3e-5);
+  // The outer ring of points, 0.0125 m from the edge, and the next, 0.0375 m from it, lie in
+  // the 0.04 m band.
+  EXPECT_EQ(check.inBand, 2u * (80 + 40) * 2 - 16);
+  EXPECT_EQ(check.stats.pointsGathered, check.inBand);
+  EXPECT_EQ(check.stats.triangles, 16u * (1 + 4 + 16));
   // The lattice of the depth-2 triangles' corners and midpoints: every 0.0625 m.
-  EXPECT_EQ(field.stats().nodes, 33u * 17u);
+  EXPECT_EQ(check.stats.nodes, 33u * 17u);
+}
+
+// Given the scene's solids (a floor slab under the floor, a wall slab behind the wall), the band
+// runs only along the concave edge where the wall stands on the floor: the floor's three open
+// edges are convex, nothing rises in front of the floor there, and their points come from the
+// triangles like every other point.
+TEST(IndirectField, WithTheScenesSolidsTheBandRunsAlongTheConcaveEdgesOnly) {
+  const auto insideBox = [](const Vec3& p, const Vec3& lo, const Vec3& hi) {
+    return (p.array() > lo.array()).all() && (p.array() < hi.array()).all();
+  };
+  std::size_t probes = 0;
+  const BandCheck check = floorInBand([](const Vec3& x) { return 2.0 - x.x(); },
+                                      [&](const Vec3& p) {
+                                        ++probes;
+                                        return insideBox(p, Vec3(0, 0, -0.2), Vec3(2, 1, 0)) ||
+                                               insideBox(p, Vec3(2, 0, -0.2), Vec3(2.2, 1, 1));
+                                      });
+  EXPECT_GT(probes, 0u);
+  EXPECT_LE(check.worst, 3e-5);
+  // Two columns of 40 points, 0.0125 m and 0.0375 m from the wall, lie in the band.
+  EXPECT_EQ(check.inBand, 2u * 40);
+  EXPECT_EQ(check.stats.pointsGathered, check.inBand);
 }
 
 TEST(IndirectField, PointsOnNoElementOrUnevenAtTheDepthLimitAreGatheredExactly) {

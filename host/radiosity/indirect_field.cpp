@@ -94,6 +94,7 @@ struct IndirectField::State {
 
   const SurfaceMesh* mesh;
   FieldGather gather;
+  InsideSolid insideSolid;  // empty: every boundary edge is taken as concave
   FieldOptions options;
   double quantum;  // m: node positions closer than this are one node
   double nudge;    // m: how far inside a boundary node is gathered
@@ -124,9 +125,10 @@ struct IndirectField::State {
   }
   std::unordered_map<PointKey, Eigen::Vector3d, PointKeyHash> gatheredPoints;
 
-  State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o)
+  State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o, InsideSolid inside)
       : mesh(&m),
         gather(std::move(g)),
+        insideSolid(std::move(inside)),
         options(o),
         quantum(Tolerance::kRelativeInput * std::max(sceneSize, 1.0)),
         nudge(kNudgeInKernelTolerances * Tolerance::kernelLength(sceneSize)) {
@@ -309,7 +311,9 @@ struct IndirectField::State {
 
   // The element's edges on its face's boundary: probes a nudge outside the edge at a quarter,
   // a half and three quarters of it, any of which lies on no element of the face (an edge partly
-  // on the boundary counts whole, which only gathers more points exactly).
+  // on the boundary counts whole, which only gathers more points exactly). With `insideSolid`,
+  // only the concave ones: a probe moved a nudge off the face's plane, into the room, lies in a
+  // solid that stands on the face there.
   void findBoundary(const SurfaceElement& element) {
     if (element.polygon.empty()) return;
     const auto it = faceIndex.find({element.solid, element.face});
@@ -322,13 +326,17 @@ struct IndirectField::State {
       const Vec2 along = b - a;
       if (along.norm() <= quantum) continue;
       const Vec2 out = Vec2(along.y(), -along.x()).normalized();  // counter-clockwise polygon
+      bool onBoundary = false, concave = !insideSolid;
       for (double at : {0.25, 0.5, 0.75}) {
+        const Vec2 probe = a + at * along + nudge * out;
         double outside = 0.0;
-        if (root(it->second, a + at * along + nudge * out, outside) < 0 || outside > 1e-9) {
-          face.boundary.push_back({a, b});
-          break;
+        if (root(it->second, probe, outside) < 0 || outside > 1e-9) {
+          onBoundary = true;
+          concave = concave || insideSolid(face.origin + probe.x() * face.u + probe.y() * face.v +
+                                           nudge * face.normal);
         }
       }
+      if (onBoundary && concave) face.boundary.push_back({a, b});
     }
   }
 
@@ -512,8 +520,9 @@ struct IndirectField::State {
 };
 
 IndirectField::IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
-                             FieldOptions options)
-    : state_(std::make_unique<State>(mesh, sceneSize, std::move(gather), options)) {
+                             FieldOptions options, InsideSolid insideSolid)
+    : state_(std::make_unique<State>(mesh, sceneSize, std::move(gather), options,
+                                     std::move(insideSolid))) {
   state_->placePendingNodes();
 }
 

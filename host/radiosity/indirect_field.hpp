@@ -38,6 +38,9 @@ struct FacePoint {
 // what the field gathers at its nodes.
 using FieldGather = std::function<std::vector<Eigen::Vector3d>(std::span<const SamplePoint>)>;
 
+// Whether a point lies inside one of the scene's solids (by more than the length tolerance).
+using InsideSolid = std::function<bool(const Vec3&)>;
+
 struct FieldOptions {
   // How far a side's midpoint may lie from the straight line between its corners, per channel,
   // relative to the interreflected E at the midpoint, for a triangle to be kept. That bounds
@@ -60,6 +63,10 @@ struct FieldOptions {
   // point there sees the steps between that face's cells (MeshOptions::linearGather) at a scale
   // of its own distance from the corner, finer than the deepest triangles: on the office the
   // field departed by 3.0e-3 and 4.3e-3 at pixels 2 to 32 mm from a corner without the band.
+  // Where the field knows the scene's solids (IndirectField's `insideSolid`), the band runs only
+  // along the concave edges, where a solid stands on the face: beside a convex edge (a desk's
+  // top, a window's reveal) nothing rises in front of the face and the light bends no faster
+  // than elsewhere.
   double boundaryBand = 0.04;
 };
 
@@ -80,8 +87,10 @@ class IndirectField {
   static constexpr double kNudgeInKernelTolerances = 10.0;
 
   // `mesh` must outlive the field. `sceneSize` (m, Scene::size) sets the length tolerances.
+  // `insideSolid`, where given, tells the concave edges of a face from the convex ones
+  // (FieldOptions::boundaryBand); without it every edge of a face's elements counts as concave.
   IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
-                FieldOptions options = {});
+                FieldOptions options = {}, InsideSolid insideSolid = {});
   ~IndirectField();
   IndirectField(const IndirectField&) = delete;
   IndirectField& operator=(const IndirectField&) = delete;

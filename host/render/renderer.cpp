@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "geometry/angles.hpp"
+#include "geometry/tolerance.hpp"
 #include "illuminance/host_daylight.hpp"
 #include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
@@ -96,10 +98,17 @@ struct Renderer::State {
       // The mesh's direct light leaves the engine on a scene with the sky's sources cut at
       // some height (engine/daylight_evaluation.hpp); the samples take the sky on the host.
       if (scene->sky) illuminance.setScene(*scene);
-      field = std::make_unique<IndirectField>(interreflection->mesh(), scene->size(),
-                                              [this](std::span<const SamplePoint> points) {
-                                                return interreflection->indirectChannels(points);
-                                              });
+      const double inside = Tolerance::kernelLength(scene->size());
+      field = std::make_unique<IndirectField>(
+          interreflection->mesh(), scene->size(),
+          [this](std::span<const SamplePoint> points) {
+            return interreflection->indirectChannels(points);
+          },
+          FieldOptions{},
+          [this, inside](const Vec3& p) {
+            return std::any_of(scene->solids.begin(), scene->solids.end(),
+                               [&](const Solid& s) { return s.shape.containsStrictly(p, inside); });
+          });
     }
     background = SkyBackground(*scene);
     if (scene->sun) sunDirection = scene->sun->direction.normalized();
