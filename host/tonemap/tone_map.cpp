@@ -77,7 +77,7 @@ Eigen::VectorXd raisedToWhite(const Eigen::VectorXd& solved, const Eigen::Vector
   Eigen::VectorXd shown = solved;
   const double gap = solved.size() ? -solved.maxCoeff() : 0.0;
   if (gap > 0) shown.array() += gap;
-  stats.raisedToWhite = std::max(gap, 0.0);
+  stats.raisedToWhite = gap > 0 ? gap : 0.0;
   stats.atLowerBound = static_cast<int>((shown.array() <= lower.array()).count());
   stats.atUpperBound = static_cast<int>((shown.array() >= 0.0).count());
   return shown;
