@@ -302,5 +302,32 @@ TEST(ToneMap, ClipPutsTheLogAverageAtMiddleGrey) {
   EXPECT_EQ(clip.at(19, 0), 1.0f);
 }
 
+// One face, a gentle ramp 10 → 20 cd/m², no window or luminaire: the weak rows alone would put
+// its log average near mid-grey and leave the display's white unused. The solved picture is
+// raised by one gain until its brightest vertices (the last column, on the lattice rows 0, 8, 16,
+// 24 and the last row, equal to rounding) are at white; the ratios the rows fixed are kept.
+TEST(ToneMap, TheBrightestVertexIsShownAtWhite) {
+  testing::HdrScene scene{RgbImage(64, 32), FaceIdImage(64, 32)};
+  for (int y = 0; y < 32; ++y) {
+    for (int x = 0; x < 64; ++x) {
+      float* p = scene.hdr.pixel(x, y);
+      p[0] = p[1] = p[2] = static_cast<float>(10.0 * std::pow(2.0, x / 63.0));
+      scene.faces.at(x, y) = 1;
+    }
+  }
+  ToneMapStats stats;
+  const ScalarImage display =
+      displayValues(scene.hdr, scene.faces, optionsFor(DisplayMethod::Constraint, 0.02), &stats);
+  EXPECT_GT(stats.raisedToWhite, 0.5);  // the exposure curve alone leaves it well below white
+  EXPECT_GE(stats.atUpperBound, 1);
+  for (int y : {0, 8, 16, 24, 31}) {
+    EXPECT_NEAR(display.at(63, y), 1.0, 1e-6) << y;
+    // The ramp's ratio 2 over 63 pixels, a gentle gradient (0.011 per pixel) that the medium
+    // rows show steeper ((g/k)^(β−1) ≥ 1): the dark end is below 1/2 of white, above black.
+    EXPECT_LT(display.at(0, y), 0.5f) << y;
+    EXPECT_GT(display.at(0, y), 0.02f) << y;
+  }
+}
+
 }  // namespace
 }  // namespace penumbra

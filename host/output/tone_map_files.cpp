@@ -37,6 +37,7 @@ nlohmann::json toneMapStatsJson(const ToneMapStats& s) {
       {"converged", s.converged},
       {"at_lower_bound", s.atLowerBound},
       {"at_upper_bound", s.atUpperBound},
+      {"raised_to_white_log", s.raisedToWhite},
       {"residual", residual},
       {"seconds",
        {{"build", s.buildSeconds},

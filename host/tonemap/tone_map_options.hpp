@@ -60,7 +60,9 @@ struct ToneMapStats {
   int outerIterations = 0;    // factorisations: the two stages below together
   int activeSetIterations = 0, projectedNewtonIterations = 0;
   bool converged = true;
-  int atLowerBound = 0, atUpperBound = 0;
+  int atLowerBound = 0, atUpperBound = 0;  // vertices shown at black / white
+  // log V added to every solved vertex so that the brightest is at white (0 when one was).
+  double raisedToWhite = 0;
   // Root mean square and largest |residual| of each level's rows, unweighted (in log V units).
   double strongRms = 0, strongMax = 0;
   double mediumRms = 0, mediumMax = 0;
