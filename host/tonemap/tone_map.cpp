@@ -70,8 +70,8 @@ void reportResiduals(const ConstraintSystem& system, const Eigen::VectorXd& valu
 // [LowerBound, 1] (each rises by the brightest one's gap to white), changes only the weak rows'
 // residual, and creates no halo (a region's every pixel takes the same factor). It lifts the
 // picture where the sRGB code values are denser per log step (the code value's slope in log V
-// grows with V), so the same ratios span more code values: the from-window view's TMQI S rises
-// from 0.850 to 0.891 at 640×360 (docs/tonemap.md).
+// grows with V), so the same ratios span more code values: the office's from-window view has
+// TMQI S 0.891 with the raise and 0.850 without at 640×360 (docs/tonemap.md).
 Eigen::VectorXd raisedToWhite(const Eigen::VectorXd& solved, const Eigen::VectorXd& lower,
                               ToneMapStats& stats) {
   Eigen::VectorXd shown = solved;
