@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "cl/device.hpp"
+#include "memory/heap_settings.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
 
@@ -68,6 +69,7 @@ Timed bestOf(Renderer& renderer, const View& view, int k, int repeat) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  keepFreedBlocksInTheHeap();  // as the command does: what these renders cost there
   std::string deviceSpec = "auto", only, sceneFile = PENUMBRA_SOURCE_DIR "/data/office.yaml";
   int width = 1280, height = 720, k = 8, repeat = 2;
   bool directOnly = false;

@@ -16,6 +16,7 @@
 
 #include "cl/device.hpp"
 #include "engine/illuminance_engine.hpp"
+#include "memory/heap_settings.hpp"
 #include "output/render_files.hpp"
 #include "render/renderer.hpp"
 #include "scene/scene_loader.hpp"
@@ -35,6 +36,7 @@ double seconds(auto&& f) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  keepFreedBlocksInTheHeap();  // as the command does: what these renders cost there
   std::string deviceSpec = "auto", viewName = "from-door";
   int width = 1280, height = 720, repeat = 2;
   for (int i = 1; i + 1 < argc; i += 2) {

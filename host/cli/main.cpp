@@ -1,5 +1,4 @@
 // penumbra's command line: parses with CLI11 and hands over to one function per subcommand.
-#include <malloc.h>
 #include <CLI/CLI.hpp>
 
 #include "cli/devices_command.hpp"
@@ -14,6 +13,7 @@
 #include "cli/tonemap_options.hpp"
 #include "cli/version.hpp"
 #include "cluster/child_process.hpp"
+#include "memory/heap_settings.hpp"
 #include "output/interrupt_cleanup.hpp"
 #include "viz/case_plots.hpp"
 #include "viz/isoband_svg.hpp"
@@ -23,14 +23,7 @@
 #include "viz/render_png.hpp"
 
 int main(int argc, char** argv) {
-  // Batches of points allocate and free buffers of a few MB to a few tens of MB, launch after
-  // launch (points, patch tables, per-source outputs, the OpenCL buffers). By default glibc
-  // serves such blocks by mmap and unmaps them on free, so every launch faults its pages in
-  // afresh: a fifth of the office's run time. Keeping blocks up to 32 MB (glibc's largest
-  // threshold) in the heap, and the heap's top up to 1 GB untrimmed, lets the next batch reuse
-  // them: `penumbra grid data/office.yaml` 2.6-2.8 s -> 2.0-2.3 s, page faults 70 000 -> 53 000.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
+  penumbra::keepFreedBlocksInTheHeap();
   // Before any thread starts: Ctrl-C or SIGTERM then leaves no staging directory behind.
   penumbra::removeStagingOnInterrupt();
   CLI::App app{penumbra::help::kProgram, "penumbra"};
