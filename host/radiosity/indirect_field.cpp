@@ -94,7 +94,6 @@ struct IndirectField::State {
 
   const SurfaceMesh* mesh;
   FieldGather gather;
-  InsideSolid insideSolid;  // empty: every boundary edge is taken as concave
   FieldOptions options;
   double quantum;  // m: node positions closer than this are one node
   double nudge;    // m: how far inside a boundary node is gathered
@@ -125,10 +124,11 @@ struct IndirectField::State {
   }
   std::unordered_map<PointKey, Eigen::Vector3d, PointKeyHash> gatheredPoints;
 
-  State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o, InsideSolid inside)
+  // `insideSolid` is asked only here, while the boundary edges are found.
+  State(const SurfaceMesh& m, double sceneSize, FieldGather g, FieldOptions o,
+        const InsideSolid& insideSolid)
       : mesh(&m),
         gather(std::move(g)),
-        insideSolid(std::move(inside)),
         options(o),
         quantum(Tolerance::kRelativeInput * std::max(sceneSize, 1.0)),
         nudge(kNudgeInKernelTolerances * Tolerance::kernelLength(sceneSize)) {
@@ -139,7 +139,7 @@ struct IndirectField::State {
       buildGrid(face);
     }
     if (options.boundaryBand > 0.0) {
-      for (const SurfaceElement& element : mesh->elements) findBoundary(element);
+      for (const SurfaceElement& element : mesh->elements) findBoundary(element, insideSolid);
       for (std::size_t f = 0; f < faces.size(); ++f)
         for (int t : roots[f]) listNearBoundary(static_cast<int>(f), t);
     }
@@ -311,10 +311,10 @@ struct IndirectField::State {
 
   // The element's edges on its face's boundary: probes a nudge outside the edge at a quarter,
   // a half and three quarters of it, any of which lies on no element of the face (an edge partly
-  // on the boundary counts whole, which only gathers more points exactly). With `insideSolid`,
-  // only the concave ones: a probe moved a nudge off the face's plane, into the room, lies in a
-  // solid that stands on the face there.
-  void findBoundary(const SurfaceElement& element) {
+  // on the boundary counts whole, which only gathers more points exactly). With `insideSolid`
+  // (empty: every boundary edge counts), only the concave ones: a probe moved a nudge off the
+  // face's plane, into the room, lies in a solid that stands on the face there.
+  void findBoundary(const SurfaceElement& element, const InsideSolid& insideSolid) {
     if (element.polygon.empty()) return;
     const auto it = faceIndex.find({element.solid, element.face});
     if (it == faceIndex.end()) return;
@@ -520,9 +520,8 @@ struct IndirectField::State {
 };
 
 IndirectField::IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
-                             FieldOptions options, InsideSolid insideSolid)
-    : state_(std::make_unique<State>(mesh, sceneSize, std::move(gather), options,
-                                     std::move(insideSolid))) {
+                             FieldOptions options, const InsideSolid& insideSolid)
+    : state_(std::make_unique<State>(mesh, sceneSize, std::move(gather), options, insideSolid)) {
   state_->placePendingNodes();
 }
 

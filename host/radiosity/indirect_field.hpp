@@ -89,8 +89,9 @@ class IndirectField {
   // `mesh` must outlive the field. `sceneSize` (m, Scene::size) sets the length tolerances.
   // `insideSolid`, where given, tells the concave edges of a face from the convex ones
   // (FieldOptions::boundaryBand); without it every edge of a face's elements counts as concave.
+  // It is asked only while the field is built.
   IndirectField(const SurfaceMesh& mesh, double sceneSize, FieldGather gather,
-                FieldOptions options = {}, InsideSolid insideSolid = {});
+                FieldOptions options = {}, const InsideSolid& insideSolid = {});
   ~IndirectField();
   IndirectField(const IndirectField&) = delete;
   IndirectField& operator=(const IndirectField&) = delete;

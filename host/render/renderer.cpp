@@ -2,14 +2,13 @@
 
 #include <fmt/format.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 
 #include "geometry/angles.hpp"
-#include "geometry/tolerance.hpp"
+#include "grid/grid_evaluation.hpp"
 #include "illuminance/host_daylight.hpp"
 #include "illuminance/skylight.hpp"
 #include "illuminance/sunlight.hpp"
@@ -98,16 +97,18 @@ struct Renderer::State {
       // The mesh's direct light leaves the engine on a scene with the sky's sources cut at
       // some height (engine/daylight_evaluation.hpp); the samples take the sky on the host.
       if (scene->sky) illuminance.setScene(*scene);
-      const double inside = Tolerance::kernelLength(scene->size());
+      // The field's probes lie IndirectField::kNudgeInKernelTolerances inside a solid where
+      // one stands on a face, far beyond the locator's input tolerance.
+      const SolidLocator solids(*scene);
       field = std::make_unique<IndirectField>(
           interreflection->mesh(), scene->size(),
           [this](std::span<const SamplePoint> points) {
             return interreflection->indirectChannels(points);
           },
           FieldOptions{},
-          [this, inside](const Vec3& p) {
-            return std::any_of(scene->solids.begin(), scene->solids.end(),
-                               [&](const Solid& s) { return s.shape.containsStrictly(p, inside); });
+          [&solids](const Vec3& p) {
+            SamplePoint probe{p, Vec3::UnitZ(), -1};
+            return solids.classify(probe) >= 0;
           });
     }
     background = SkyBackground(*scene);
