@@ -1,5 +1,9 @@
 #include "radiosity/indirect_field.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -424,76 +428,117 @@ struct IndirectField::State {
     return t;
   }
 
+  // Where a run of points lies: neighbouring points mostly share a face and a fan triangle, so
+  // each point first tries the last one's.
+  struct Cursor {
+    int solid = -2, faceOfSolid = -2, face = -1;
+    int root = -1;
+  };
+
+  // The fan triangle a point lies in, with its face-frame position into `local`; -1 where it is
+  // gathered exactly (on no element, outside every triangle, or in the band). The cursor's
+  // triangle is taken where it holds the point strictly inside (on an edge the search decides,
+  // so that a point's triangle does not depend on the order or the company of the points).
+  int locate(const FacePoint& p, Vec2& local, Cursor& cursor) const {
+    if (p.solid != cursor.solid || p.face != cursor.faceOfSolid) {
+      const auto it = faceIndex.find({p.solid, p.face});
+      cursor = Cursor{p.solid, p.face, it == faceIndex.end() ? -1 : it->second, -1};
+    }
+    if (cursor.face < 0) return -1;
+    local = faces[cursor.face].local(p.position);
+    double outside = INFINITY;
+    int t = -1;
+    if (cursor.root >= 0 && triangles[cursor.root].barycentric(local).minCoeff() > 0.0) {
+      t = cursor.root;
+      outside = 0.0;
+    } else {
+      t = root(cursor.face, local, outside);
+    }
+    cursor.root = t;
+    const double reach = 1e-6;  // barycentric: how far outside its triangle a point may lie
+    if (t < 0 || outside > reach || nearBoundary(t, local)) return -1;
+    return t;
+  }
+
+  // Runs body(range) over the point indices in parallel chunks; the field is only read meanwhile.
+  template <typename Body>
+  static void forEachPoint(std::size_t count, const Body& body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kPointsPerTask),
+                      [&](const tbb::blocked_range<std::size_t>& range) { body(range); });
+  }
+  static constexpr std::size_t kPointsPerTask = 4096;
+
+  // The field's value at x on kept triangle t, per channel.
+  void interpolate(int t, const Vec2& x, float* channels) const {
+    const FieldTriangle& tri = triangles[t];
+    const std::array<double, 6> w = quadraticWeights(tri.barycentric(x));
+    Eigen::Vector3d e = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
+    for (int c = 0; c < 3; ++c) channels[c] = static_cast<float>(e[c]);
+  }
+
   void evaluate(std::span<const FacePoint> points, std::span<float> channels) {
     const auto start = Clock::now();
-    const double reach = 1e-6;  // barycentric: how far outside its triangle a point may lie
-    std::vector<int> leaf(points.size(), -1);
-    std::vector<Vec2> local(points.size());
-    std::vector<SamplePoint> exact;
-    std::vector<std::size_t> exactAt;
-    int lastFace = -1, lastSolid = -2, lastFaceOfSolid = -2, lastRoot = -1;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const FacePoint& p = points[i];
-      int faceId = -1;
-      if (p.solid == lastSolid && p.face == lastFaceOfSolid) {
-        faceId = lastFace;
-      } else {
-        const auto it = faceIndex.find({p.solid, p.face});
-        faceId = it == faceIndex.end() ? -1 : it->second;
-        lastSolid = p.solid, lastFaceOfSolid = p.face, lastFace = faceId;
-      }
-      double outside = INFINITY;
-      int t = -1;
-      if (faceId >= 0) {
-        local[i] = faces[faceId].local(p.position);
-        // Neighbouring points mostly share a fan triangle: the last one's, where it holds this
-        // one strictly inside (on an edge the search decides, so that a point's triangle does
-        // not depend on the order of the points).
-        if (lastRoot >= 0 && triangles[lastRoot].face == faceId &&
-            triangles[lastRoot].barycentric(local[i]).minCoeff() > 0.0) {
-          t = lastRoot;
-          outside = 0.0;
+    const std::size_t count = points.size();
+    constexpr int kGatherExactly = -1, kDone = -2;
+    // Per point: the open triangle it waits for, kDone once interpolated, or kGatherExactly.
+    std::vector<int> leaf(count, kGatherExactly);
+    std::vector<Vec2> local(count);
+    // Every point on a kept triangle is interpolated in this first pass; the points that reach
+    // an open one wait for the rounds below.
+    tbb::enumerable_thread_specific<std::vector<std::size_t>> waitingParts;
+    forEachPoint(count, [&](const tbb::blocked_range<std::size_t>& range) {
+      Cursor cursor;
+      std::vector<std::size_t>& waiting = waitingParts.local();
+      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+        const int t = locate(points[i], local[i], cursor);
+        if (t < 0) continue;
+        leaf[i] = descend(t, local[i]);
+        if (triangles[leaf[i]].state == TriangleState::Kept) {
+          interpolate(leaf[i], local[i], &channels[i * 3]);
+          leaf[i] = kDone;
+        } else if (triangles[leaf[i]].state == TriangleState::Exact) {
+          leaf[i] = kGatherExactly;
         } else {
-          t = root(faceId, local[i], outside);
+          waiting.push_back(i);
         }
-        lastRoot = t;
       }
-      if (t < 0 || outside > reach || nearBoundary(t, local[i])) {
-        exactAt.push_back(i);
-        exact.push_back(
-            SamplePoint{p.position, faceId >= 0 ? faces[faceId].normal : Vec3::UnitZ(), p.solid});
-        continue;
-      }
-      leaf[i] = descend(t, local[i]);
-    }
-    // Rounds: gather the open triangles the points reach, decide them, descend again.
-    for (;;) {
+    });
+    std::vector<std::size_t> waiting;
+    for (const std::vector<std::size_t>& part : waitingParts)
+      waiting.insert(waiting.end(), part.begin(), part.end());
+    std::sort(waiting.begin(), waiting.end());
+    // Rounds: gather the open triangles the waiting points reach, decide them, descend again.
+    // Only the rounds change the field.
+    while (!waiting.empty()) {
       std::vector<int> open;
-      std::vector<char> listed(triangles.size(), 0);
-      for (std::size_t i = 0; i < points.size(); ++i) {
-        if (leaf[i] < 0) continue;
+      for (std::size_t i : waiting) {
         leaf[i] = descend(leaf[i], local[i]);
-        if (triangles[leaf[i]].state == TriangleState::Open && !listed[leaf[i]]) {
-          listed[leaf[i]] = 1;
-          open.push_back(leaf[i]);
-        }
+        if (triangles[leaf[i]].state == TriangleState::Open) open.push_back(leaf[i]);
       }
+      std::sort(open.begin(), open.end());
+      open.erase(std::unique(open.begin(), open.end()), open.end());
       if (open.empty()) break;
       gatherNodes(open);
       for (int t : open) decide(t);
     }
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      if (leaf[i] < 0) continue;
-      const FieldTriangle& tri = triangles[leaf[i]];
-      if (tri.state == TriangleState::Exact) {
-        exactAt.push_back(i);
-        exact.push_back(SamplePoint{points[i].position, faces[tri.face].normal, points[i].solid});
+    for (std::size_t i : waiting) {
+      if (triangles[leaf[i]].state == TriangleState::Exact) {
+        leaf[i] = kGatherExactly;
         continue;
       }
-      const std::array<double, 6> w = quadraticWeights(tri.barycentric(local[i]));
-      Eigen::Vector3d e = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
-      for (int c = 0; c < 3; ++c) channels[i * 3 + c] = static_cast<float>(e[c]);
+      interpolate(leaf[i], local[i], &channels[i * 3]);
+      leaf[i] = kDone;
+    }
+    std::vector<SamplePoint> exact;
+    std::vector<std::size_t> exactAt;
+    for (std::size_t i = 0; i < count; ++i) {
+      if (leaf[i] != kGatherExactly) continue;
+      const FacePoint& p = points[i];
+      const auto it = faceIndex.find({p.solid, p.face});
+      exactAt.push_back(i);
+      exact.push_back(SamplePoint{
+          p.position, it == faceIndex.end() ? Vec3::UnitZ() : faces[it->second].normal, p.solid});
     }
     // Points gathered one by one are kept by their exact position: the renders of one view
     // (another interval, the AOV and the image) ask for the same points again.

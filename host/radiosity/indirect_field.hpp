@@ -98,7 +98,9 @@ class IndirectField {
 
   // The interreflected E (lx per channel) at each point, 3 values per point into `channels`:
   // interpolated on the element the point lies on, gathering the triangles it needs first;
-  // gathered exactly where the point lies on no element (a face without a mesh).
+  // gathered exactly where the point lies on no element (a face without a mesh). The points are
+  // located and interpolated in parallel (the field is only read then); the gathers and the
+  // decisions on new triangles run between those passes.
   void evaluate(std::span<const FacePoint> points, std::span<float> channels);
   const IndirectFieldStats& stats() const;
 

@@ -1,6 +1,8 @@
 #include "render/renderer.hpp"
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <chrono>
 #include <cmath>
@@ -25,6 +27,15 @@ namespace {
 // Points per call of the illuminance engine: bounds the memory of one call and gives the progress
 // line something to count.
 constexpr std::size_t kBatch = 1 << 16;
+
+// Runs body(i) for i in [0, count) in parallel chunks; each i writes only its own outputs.
+template <typename Body>
+void forEachSample(std::size_t count, const Body& body) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for (std::size_t i = range.begin(); i < range.end(); ++i) body(i);
+                    });
+}
 
 // Everything per sample of one camera's sample grid.
 struct SampleLayer {
@@ -217,26 +228,27 @@ struct Renderer::State {
     std::vector<float> channels;
     for (std::size_t start = 0; start < samples.size(); start += kBatch) {
       const std::size_t end = std::min(samples.size(), start + kBatch);
-      points.clear();
-      onFaces.clear();
-      for (std::size_t j = start; j < end; ++j) {
-        const SamplePoint p = surfacePoint(camera, layer.visibility, samples[j]);
-        const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[samples[j]]);
-        if (exact)
-          points.push_back(p);
-        else
-          onFaces.push_back(FacePoint{p.position, face.index, face.face});
-      }
+      points.resize(end - start);
+      forEachSample(end - start, [&](std::size_t j) {
+        points[j] = surfacePoint(camera, layer.visibility, samples[start + j]);
+      });
       if (exact) {
         const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
         for (std::size_t j = start; j < end; ++j)
           for (int c = 0; c < 3; ++c)
             indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
       } else {
+        onFaces.resize(points.size());
         channels.assign(onFaces.size() * 3, 0.0f);
+        forEachSample(points.size(), [&](std::size_t j) {
+          const VisibleFace& face =
+              visibility.visible().face(layer.visibility.faceIds[samples[start + j]]);
+          onFaces[j] = FacePoint{points[j].position, face.index, face.face};
+        });
         field->evaluate(onFaces, channels);
-        for (std::size_t j = start; j < end; ++j)
-          for (int c = 0; c < 3; ++c) indirect[samples[j] * 3 + c] = channels[(j - start) * 3 + c];
+        forEachSample(points.size(), [&](std::size_t j) {
+          for (int c = 0; c < 3; ++c) indirect[samples[start + j] * 3 + c] = channels[j * 3 + c];
+        });
       }
       done(end - start);
     }
@@ -248,13 +260,14 @@ struct Renderer::State {
                    const std::function<void(std::size_t)>& done) {
     std::vector<float> indirect(layer.visibility.faceIds.size() * 3, 0.0f);  // lx per channel
     indirectAt(camera, layer, surface, exact, indirect, done);
-    for (std::size_t i : surface) {
+    forEachSample(surface.size(), [&](std::size_t k) {
+      const std::size_t i = surface[k];
       const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
       const Vec3 e(indirect[i * 3], indirect[i * 3 + 1], indirect[i * 3 + 2]);
       const Vec3 l = solidReflectance[face.index].cwiseProduct(e) / std::numbers::pi;
       layer.illuminance[i] += static_cast<float>(photometric(e));
       for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
-    }
+    });
   }
 
   SampleLayer renderSamples(const Camera& camera, int interval, bool exactIndirect,
