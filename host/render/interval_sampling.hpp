@@ -73,11 +73,18 @@ class IntervalPlan {
   };
   struct Context;  // what one call of next() reads
 
-  void requestInterior(const Interval& interval, std::vector<std::size_t>& out);
-  void request(std::size_t sample, std::vector<std::size_t>& out);
-  void decideEnds(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
-  void decideMidpoint(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
-  void decideHalf(const Interval& half, const Context& c, std::vector<std::size_t>& out);
+  // What the decisions on a share of the intervals ask for and pass on: decided in parallel,
+  // each thread its own, merged after (an interval's requests lie strictly inside it).
+  struct Decisions {
+    std::vector<std::size_t> out;
+    std::vector<Interval> ends, midpoints, halves, interpolated;
+  };
+
+  void requestInterior(const Interval& interval, Decisions& d);
+  void request(std::size_t sample, Decisions& d);
+  void decideEnds(const Interval& interval, const Context& c, Decisions& d);
+  void decideMidpoint(const Interval& interval, const Context& c, Decisions& d);
+  void decideHalf(const Interval& half, const Context& c, Decisions& d);
   // (e): how many of the two neighbours one length beyond the ends could be used, and whether
   // the second differences through them are gentle.
   struct Curvature {
@@ -89,6 +96,7 @@ class IntervalPlan {
   int width_ = 0;
   std::vector<uint32_t> faceIds_;
   std::vector<uint8_t> known_;  // 1: computed exactly, values given to the last next()
+  std::vector<uint8_t> asked_;  // 1: requested (by the first pass or a next())
   std::vector<std::size_t> first_;
   std::vector<std::size_t> requested_;  // returned by the last next(): known at the next call
   std::vector<Interval> ends_;          // one face throughout, ends computed (also failed halves)
