@@ -46,17 +46,19 @@ struct IndirectField::State {
 
   enum class TriangleState : uint8_t { Open, Kept, Cut, Exact };
 
-  struct FieldTriangle {
-    std::array<int, 6> node{};   // corners a, b, c, then the midpoints of ab, bc, ca
-    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
+  // What the descent and the interpolation read first lies in the first cache line (the
+  // triangles are a few pixels across at 1280 × 720, so a render descends every few pixels).
+  struct alignas(64) FieldTriangle {
     Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
+    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
+    int children = -1;           // the first of four consecutive triangles once cut
+    TriangleState state = TriangleState::Open;
+    std::array<int, 6> node{};  // corners a, b, c, then the midpoints of ab, bc, ca
     int face = -1;
     int depth = 0;
-    int children = -1;  // the first of four consecutive triangles once cut
     // A fan triangle's: the edges of its face's elements' boundary (FieldFace::boundary) that
     // come within FieldOptions::boundaryBand of it.
     std::vector<int> nearBoundary;
-    TriangleState state = TriangleState::Open;
 
     // (λ_a, λ_b, λ_c) of a point in the face's frame.
     Eigen::Vector3d barycentric(const Vec2& x) const {
@@ -428,24 +430,32 @@ struct IndirectField::State {
     return t;
   }
 
-  // Where a run of points lies: neighbouring points mostly share a face and a fan triangle, so
-  // each point first tries the last one's.
+  // Where a run of points lies: neighbouring points mostly share a face, a fan triangle and a
+  // leaf below it, so each point first tries the last one's.
   struct Cursor {
     int solid = -2, faceOfSolid = -2, face = -1;
-    int root = -1;
+    int root = -1, leaf = -1;
   };
 
-  // The fan triangle a point lies in, with its face-frame position into `local`; -1 where it is
-  // gathered exactly (on no element, outside every triangle, or in the band). The cursor's
-  // triangle is taken where it holds the point strictly inside (on an edge the search decides,
-  // so that a point's triangle does not depend on the order or the company of the points).
+  // How far inside the cursor's leaf (barycentric) a point must lie to take it without the
+  // descent: far above the rounding of the descent's own barycentric tests, so that the leaf is
+  // the one the descent would reach.
+  static constexpr double kInsideLeaf = 1e-9;
+
+  // The leaf (kept, open or exact) below the fan triangle a point lies in, with its face-frame
+  // position into `local`; -1 where it is gathered exactly (on no element, outside every
+  // triangle, or in the band). The cursor's fan triangle is taken where it holds the point
+  // strictly inside (on an edge the search decides, so that a point's triangle does not depend
+  // on the order or the company of the points).
   int locate(const FacePoint& p, Vec2& local, Cursor& cursor) const {
     if (p.solid != cursor.solid || p.face != cursor.faceOfSolid) {
       const auto it = faceIndex.find({p.solid, p.face});
-      cursor = Cursor{p.solid, p.face, it == faceIndex.end() ? -1 : it->second, -1};
+      cursor = Cursor{p.solid, p.face, it == faceIndex.end() ? -1 : it->second};
     }
     if (cursor.face < 0) return -1;
     local = faces[cursor.face].local(p.position);
+    if (cursor.leaf >= 0 && triangles[cursor.leaf].barycentric(local).minCoeff() > kInsideLeaf)
+      return nearBoundary(cursor.root, local) ? -1 : cursor.leaf;
     double outside = INFINITY;
     int t = -1;
     if (cursor.root >= 0 && triangles[cursor.root].barycentric(local).minCoeff() > 0.0) {
@@ -455,9 +465,11 @@ struct IndirectField::State {
       t = root(cursor.face, local, outside);
     }
     cursor.root = t;
+    cursor.leaf = -1;
     const double reach = 1e-6;  // barycentric: how far outside its triangle a point may lie
     if (t < 0 || outside > reach || nearBoundary(t, local)) return -1;
-    return t;
+    cursor.leaf = descend(t, local);
+    return cursor.leaf;
   }
 
   // Runs body(range) over the point indices in parallel chunks; the field is only read meanwhile.
@@ -491,9 +503,8 @@ struct IndirectField::State {
       Cursor cursor;
       std::vector<std::size_t>& waiting = waitingParts.local();
       for (std::size_t i = range.begin(); i < range.end(); ++i) {
-        const int t = locate(points[i], local[i], cursor);
-        if (t < 0) continue;
-        leaf[i] = descend(t, local[i]);
+        leaf[i] = locate(points[i], local[i], cursor);
+        if (leaf[i] < 0) continue;
         if (triangles[leaf[i]].state == TriangleState::Kept) {
           interpolate(leaf[i], local[i], &channels[i * 3]);
           leaf[i] = kDone;

@@ -1,18 +1,9 @@
 #include "render/interval_sampling.hpp"
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-
 #include <algorithm>
 #include <cmath>
 
 namespace penumbra {
-
-namespace {
-// Intervals per task of the parallel decisions: a few microseconds of work each.
-constexpr std::size_t kIntervalsPerTask = 2048;
-}  // namespace
 
 struct IntervalPlan::Context {
   std::span<const ShadowClass> classes;
@@ -57,8 +48,7 @@ IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> face
                            std::span<const uint8_t> needed, int interval)
     : width_(width),
       faceIds_(faceIds.begin(), faceIds.end()),
-      known_(static_cast<std::size_t>(width) * height, 0),
-      asked_(known_.size(), 0) {
+      known_(static_cast<std::size_t>(width) * height, 0) {
   const int k = std::max(interval, 1);
   // (a) in the other direction: a sample whose neighbour above or below shows another face (or
   // none) is exact, and cuts its interval there. The light changes fastest where surfaces meet
@@ -96,68 +86,69 @@ IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> face
     }
   }
   requested_ = first_;
-  for (std::size_t i : first_) asked_[i] = 1;
 }
 
-void IntervalPlan::request(std::size_t sample, Decisions& d) {
-  if (asked_[sample]) return;
-  asked_[sample] = 1;  // known once its round is computed
-  d.out.push_back(sample);
+void IntervalPlan::request(std::size_t sample, std::vector<std::size_t>& out) {
+  if (known_[sample]) return;
+  known_[sample] = 2;  // requested: known once its round is computed
+  out.push_back(sample);
 }
 
-void IntervalPlan::requestInterior(const Interval& interval, Decisions& d) {
-  for (std::size_t i = interval.a + 1; i < interval.b; ++i) request(i, d);
+void IntervalPlan::requestInterior(const Interval& interval, std::vector<std::size_t>& out) {
+  for (std::size_t i = interval.a + 1; i < interval.b; ++i) request(i, out);
 }
 
 void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
-                              Decisions& d) {
+                              std::vector<std::size_t>& out) {
   if (interval.b - interval.a < 2) return;  // nothing between
   if (!c.sameClasses(interval.a, interval.b)) {
     // (b): a shadow edge lies between the ends. The midpoint says in which half; each half is
     // then decided on its own, down to where the edge's interval is computed whole.
     if (interval.b - interval.a >= 3) {
-      request((interval.a + interval.b) / 2, d);
-      d.midpoints.push_back(interval);
+      request((interval.a + interval.b) / 2, out);
+      midpoints_.push_back(interval);
     } else {
-      requestInterior(interval, d);
+      requestInterior(interval, out);
     }
   } else if (interval.b - interval.a >= 3) {
-    // Lit or in umbra at both ends, with gentle curvature through the neighbouring intervals'
-    // ends on both sides: (e) at the interval's own length stands for (c).
+    // Gentle curvature through the neighbouring intervals' ends on both sides (same face, same
+    // classes): (e) at the interval's own length stands for (c). In a penumbra too: a shadow
+    // edge of another occluder inside the interval bends the light there, and the second
+    // differences on the side it lies on straddle it.
     const Curvature around = curvature(interval, c);
     if (around.sides == 2 && around.gentle) {
-      d.interpolated.push_back(interval);
+      interpolated_.push_back(interval);
       return;
     }
-    request((interval.a + interval.b) / 2, d);  // (c)
-    d.midpoints.push_back(interval);
+    request((interval.a + interval.b) / 2, out);  // (c)
+    midpoints_.push_back(interval);
   } else if (c.inPenumbra(interval.a)) {
     // A single inner sample in a penumbra: checking it costs as much as computing it.
-    requestInterior(interval, d);
+    requestInterior(interval, out);
   } else {
-    d.halves.push_back(interval);  // a single inner sample, lit or in umbra: (e) decides
+    halves_.push_back(interval);  // a single inner sample, lit or in umbra: (e) decides
   }
 }
 
 void IntervalPlan::decideMidpoint(const Interval& interval, const Context& c,
-                                  Decisions& d) {
+                                  std::vector<std::size_t>& out) {
   const std::size_t m = (interval.a + interval.b) / 2;
   const double t = static_cast<double>(m - interval.a) / (interval.b - interval.a);
   if (!c.sameClasses(interval.a, m) || !c.sameClasses(m, interval.b) ||
       !c.onLine(interval.a, m, interval.b, t, kMidpointMiss)) {
     // Each half is an interval of its own, its ends known: (b), (c) and (e) again, so that a
     // long interval costs no more than two short ones where the light bends.
-    d.ends.push_back(Interval{interval.a, m});
-    d.ends.push_back(Interval{m, interval.b});
+    ends_.push_back(Interval{interval.a, m});
+    ends_.push_back(Interval{m, interval.b});
     return;
   }
   for (const Interval half : {Interval{interval.a, m}, Interval{m, interval.b}}) {
     if (half.b - half.a < 2) continue;  // no sample between
     if (c.inPenumbra(half.a) && half.b - half.a >= 3) {
-      request((half.a + half.b) / 2, d);  // (d)
-      d.midpoints.push_back(half);
+      request((half.a + half.b) / 2, out);  // (d)
+      midpoints_.push_back(half);
     } else {
-      d.halves.push_back(half);
+      halves_.push_back(half);
     }
   }
 }
@@ -185,13 +176,13 @@ IntervalPlan::Curvature IntervalPlan::curvature(const Interval& interval, const 
 }
 
 void IntervalPlan::decideHalf(const Interval& half, const Context& c,
-                              Decisions& d) {
+                              std::vector<std::size_t>& out) {
   if (curvature(half, c).gentle) {  // (e)
-    d.interpolated.push_back(half);
+    interpolated_.push_back(half);
   } else if (half.b - half.a >= 3) {
-    d.ends.push_back(half);  // (c) again, as an interval of its own
+    ends_.push_back(half);  // (c) again, as an interval of its own
   } else {
-    requestInterior(half, d);
+    requestInterior(half, out);
   }
 }
 
@@ -201,42 +192,19 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
   requested_.clear();
   const Context c{classes, columns, checked};
   std::vector<std::size_t> out;
-  // The halves of the last call, the midpoints it asked for and the ends of the first pass, in
-  // parallel: every sample the last call asked for is known now, so (e) sees the most
-  // neighbours, and a decision reads only samples known before this call (known_) and asks only
-  // for samples strictly inside its own interval.
+  // The halves of the last call first: every sample it asked for is known now, so (e) sees the
+  // most neighbours. Then the midpoints it asked for, then the ends of the first pass.
   while (out.empty() && !(halves_.empty() && midpoints_.empty() && ends_.empty())) {
-    const std::vector<Interval> halves = std::move(halves_), midpoints = std::move(midpoints_),
-                                ends = std::move(ends_);
+    std::vector<Interval> halves = std::move(halves_), midpoints = std::move(midpoints_),
+                          ends = std::move(ends_);
     halves_.clear();
     midpoints_.clear();
     ends_.clear();
-    tbb::enumerable_thread_specific<Decisions> parts;
-    const auto decideAll = [&](const std::vector<Interval>& list,
-                               void (IntervalPlan::*decide)(const Interval&, const Context&,
-                                                            Decisions&)) {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kIntervalsPerTask),
-                        [&](const tbb::blocked_range<std::size_t>& range) {
-                          Decisions& d = parts.local();
-                          for (std::size_t i = range.begin(); i < range.end(); ++i)
-                            (this->*decide)(list[i], c, d);
-                        });
-    };
-    decideAll(halves, &IntervalPlan::decideHalf);
-    decideAll(midpoints, &IntervalPlan::decideMidpoint);
-    decideAll(ends, &IntervalPlan::decideEnds);
+    for (const Interval& half : halves) decideHalf(half, c, out);
+    for (const Interval& interval : midpoints) decideMidpoint(interval, c, out);
+    for (const Interval& interval : ends) decideEnds(interval, c, out);
     // Halves found now wait for the next call unless nothing else is asked for: then they are
     // decided at once, with what is known.
-    const auto append = [](std::vector<Interval>& to, const std::vector<Interval>& from) {
-      to.insert(to.end(), from.begin(), from.end());
-    };
-    for (const Decisions& d : parts) {
-      out.insert(out.end(), d.out.begin(), d.out.end());
-      append(ends_, d.ends);
-      append(midpoints_, d.midpoints);
-      append(halves_, d.halves);
-      append(interpolated_, d.interpolated);
-    }
   }
   std::sort(out.begin(), out.end());
   requested_ = out;
@@ -244,8 +212,7 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
 }
 
 void IntervalPlan::interpolate(std::span<float> values, int channels) const {
-  tbb::parallel_for(std::size_t{0}, interpolated_.size(), [&](std::size_t k) {
-    const Interval& interval = interpolated_[k];
+  for (const Interval& interval : interpolated_) {
     const double length = static_cast<double>(interval.b - interval.a);
     for (std::size_t i = interval.a + 1; i < interval.b; ++i) {
       const double t = (i - interval.a) / length;
@@ -255,7 +222,7 @@ void IntervalPlan::interpolate(std::span<float> values, int channels) const {
         values[i * channels + c] = static_cast<float>(va + t * (vb - va));
       }
     }
-  });
+  }
 }
 
 }  // namespace penumbra

@@ -6,21 +6,24 @@
 // What decides where a sample is exact (docs/render.md says it with the measured errors):
 //   (a) face edges: an interval whose samples do not all show the same face is computed whole;
 //   (b) shadow classes: an interval whose ends differ in some source's or luminaire's shadow
-//       class (lit / penumbra / umbra; "receives nothing" counts as umbra) is computed whole;
-//   (c) the midpoint: an interval of 3 or more steps gets its midpoint computed, unless it is lit
-//       or in umbra at both ends and (e) at its own length passes on both sides (then it is
-//       interpolated whole); one of 2 steps goes to (e) directly, or is computed when a source
-//       is in penumbra. If the midpoint's classes differ from the ends', or the straight line
-//       between the ends misses any of its values by more than kMidpointMiss of that value, the
-//       two halves are decided as intervals of their own ((b), (c), (e): a long interval costs no
-//       more than two short ones where the light bends), otherwise the halves go on to (d), (e);
+//       class (lit / penumbra / umbra; "receives nothing" counts as umbra) has a shadow edge
+//       between them: one of 3 or more steps gets its midpoint computed and each half is decided
+//       as an interval of its own, so the edge is bracketed down to an interval of 2 steps,
+//       which is computed whole;
+//   (c) the midpoint: an interval of 3 or more steps gets its midpoint computed, unless (e) at
+//       its own length passes on both sides (then it is interpolated whole); one of 2 steps goes
+//       to (e) directly, or is computed when a source is in penumbra. If the midpoint's classes
+//       differ from an end's, or the straight line between the ends misses any of its values by
+//       more than kMidpointMiss of that value, the two halves are decided as intervals of their
+//       own ((b), (c), (e): a long interval costs no more than two short ones where the light
+//       bends), otherwise the halves go on to (d), (e);
 //   (d) penumbra halves: a half with a source in penumbra at its ends (where E is smooth but not
 //       quadratic, and a shadow edge may run between two penumbra samples) of 3 or more steps
 //       gets its own midpoint, and (c) again;
 //   (e) neighbour second differences: a half is interpolated only if the second differences
 //       through its ends and the exact samples one half-length beyond them (same face, same
-//       classes) predict an interpolation error of at most kInterpolationError; otherwise it is
-//       computed whole.
+//       classes) predict an interpolation error of at most kInterpolationError; otherwise a half
+//       of 3 or more steps is decided as an interval of its own ((b), (c)), one of 2 computed.
 // The bound behind (c) and (e): for a quadratic the line between the ends misses the midpoint by
 // h²|E''|/8 over a length h, so a half misses by a quarter of what the whole missed at its
 // midpoint; kMidpointMiss = 4 · kInterpolationError, and (e) estimates the same h²|E''|/8 from
@@ -73,18 +76,11 @@ class IntervalPlan {
   };
   struct Context;  // what one call of next() reads
 
-  // What the decisions on a share of the intervals ask for and pass on: decided in parallel,
-  // each thread its own, merged after (an interval's requests lie strictly inside it).
-  struct Decisions {
-    std::vector<std::size_t> out;
-    std::vector<Interval> ends, midpoints, halves, interpolated;
-  };
-
-  void requestInterior(const Interval& interval, Decisions& d);
-  void request(std::size_t sample, Decisions& d);
-  void decideEnds(const Interval& interval, const Context& c, Decisions& d);
-  void decideMidpoint(const Interval& interval, const Context& c, Decisions& d);
-  void decideHalf(const Interval& half, const Context& c, Decisions& d);
+  void requestInterior(const Interval& interval, std::vector<std::size_t>& out);
+  void request(std::size_t sample, std::vector<std::size_t>& out);
+  void decideEnds(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
+  void decideMidpoint(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
+  void decideHalf(const Interval& half, const Context& c, std::vector<std::size_t>& out);
   // (e): how many of the two neighbours one length beyond the ends could be used, and whether
   // the second differences through them are gentle.
   struct Curvature {
@@ -96,7 +92,6 @@ class IntervalPlan {
   int width_ = 0;
   std::vector<uint32_t> faceIds_;
   std::vector<uint8_t> known_;  // 1: computed exactly, values given to the last next()
-  std::vector<uint8_t> asked_;  // 1: requested (by the first pass or a next())
   std::vector<std::size_t> first_;
   std::vector<std::size_t> requested_;  // returned by the last next(): known at the next call
   std::vector<Interval> ends_;          // one face throughout, ends computed (also failed halves)

@@ -169,9 +169,10 @@ struct Renderer::State {
     std::vector<SamplePoint> points;
     for (std::size_t start = 0; start < indices.size(); start += kBatch) {
       const std::size_t end = std::min(indices.size(), start + kBatch);
-      points.clear();
-      for (std::size_t j = start; j < end; ++j)
-        points.push_back(surfacePoint(camera, layer.visibility, indices[j]));
+      points.resize(end - start);
+      forEachSample(end - start, [&](std::size_t j) {
+        points[j] = surfacePoint(camera, layer.visibility, indices[start + j]);
+      });
       const IlluminanceResult result = illuminance.evaluate(points, true);
       // The daylight on the host, exact in double past every solid: the sky and the ground
       // (outside the room, on an obstruction's faces, the whole sky in front of the point), the
@@ -181,8 +182,8 @@ struct Renderer::State {
       std::vector<char> beam;
       const std::vector<double> sun =
           scene->sun ? sunlight(*scene, points, &beam) : std::vector<double>();
-      for (std::size_t j = start; j < end; ++j) {
-        const std::size_t i = indices[j], local = j - start;
+      forEachSample(end - start, [&](std::size_t local) {
+        const std::size_t i = indices[start + local];
         const Vec3& rho = solidReflectance[points[local].solid];
         Vec3 light = Vec3::Zero();  // Σ E_s · colour_s, and the luminaires' E in white
         for (int s = 0; s < sources; ++s) {
@@ -213,7 +214,7 @@ struct Renderer::State {
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
         layer.illuminance[i] = static_cast<float>(e);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
-      }
+      });
       done(end - start);
     }
   }
