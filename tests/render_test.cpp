@@ -425,14 +425,15 @@ TEST(IntervalSampling, AgreesWithTheExactModeAndIsExactOnFaceBoundaries) {
   }
 }
 
-// What the issue of interval mode asks of k = 8, measured on what the picture shows, the luminance
-// Y of the RGB image: within 0.5 % of the 99th percentile of the exact (k = 1) image at every
-// pixel, and within 1 % of its own value at every pixel above 1 % of that percentile. The
-// office's two views at 320 × 180 (an interval spans four times the scene it spans at 1280 × 720,
-// so the light curves more within it), direct light: the interval plan decides the direct light
-// only.
-TEST(IntervalSampling, EightStaysWithinTheBoundsOfTheExactImage) {
-  Scene scene = loadScene(PENUMBRA_SOURCE_DIR "/data/office.yaml");
+// What interval mode promises at k = 8, measured on what the picture shows, the luminance Y of
+// the RGB image: within 0.5 % of the 99th percentile of the exact (k = 1) image at every pixel,
+// and within 1 % of its own value at every pixel above 1 % of that percentile. A scene's two
+// views at 320 × 180 (an interval spans four times the scene it spans at 1280 × 720, so the
+// light curves more within it), direct light: the interval plan decides the direct light only.
+// `brightShare`: the least share of the pixels above 1 % of the percentile, where the second bound
+// applies.
+void expectEightWithinTheBoundsOfTheExactImage(const char* path, double brightShare) {
+  Scene scene = loadScene(path);
   Renderer renderer(cpuDevice(), scene);
   const auto luminanceY = [](const RgbImage& image, std::size_t i) {
     return 0.2126 * image.rgb[i * 3] + 0.7152 * image.rgb[i * 3 + 1] +
@@ -467,9 +468,22 @@ TEST(IntervalSampling, EightStaysWithinTheBoundsOfTheExactImage) {
         view.name.c_str(), sampled.stats.exactShare(), 100 * worst / p99, p99, 100 * worstRelative);
     EXPECT_LE(worst, 0.005 * p99) << view.name;
     EXPECT_LE(worstRelative, 0.01) << view.name;
-    EXPECT_GT(bright, static_cast<int>(n / 2)) << view.name;  // the bound covers most pixels
+    EXPECT_GT(bright, static_cast<int>(brightShare * n)) << view.name;
     EXPECT_LT(sampled.stats.exactShare(), 0.6) << view.name;  // and k = 8 interpolates
   }
+}
+
+TEST(IntervalSampling, EightStaysWithinTheBoundsOfTheExactImage) {
+  expectEightWithinTheBoundsOfTheExactImage(PENUMBRA_SOURCE_DIR "/data/office.yaml", 0.5);
+}
+
+// With the sun (rules (b) and (c) of the plan for a sharp source): the sun's penumbra class
+// holds the desks' shadows inside its beam, where a sliver of sun can lie between two samples
+// of the same class. Taking the shortcut of (c) or bisecting (b) there, as for the sky and the
+// panels, leaves the door's view 0.55 % of p99 and 2.5 % at a pixel off. The sunlit patch and
+// the sky set the percentile (2 000 cd/m²): a fifth of the door's view lies above 1 % of it.
+TEST(IntervalSampling, WithTheSunEightStaysWithinTheBoundsOfTheExactImage) {
+  expectEightWithinTheBoundsOfTheExactImage(PENUMBRA_SOURCE_DIR "/data/office-sun.yaml", 0.2);
 }
 
 TEST(Supersampling, APixelIsTheMeanOfItsSamples) {

@@ -9,6 +9,7 @@ struct IntervalPlan::Context {
   std::span<const ShadowClass> classes;
   int columns = 0;
   std::span<const SampleValues> checked;
+  int sharpColumns = 0;
 
   bool sameClasses(std::size_t i, std::size_t j) const {
     return std::equal(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
@@ -16,6 +17,16 @@ struct IntervalPlan::Context {
   }
   bool inPenumbra(std::size_t i) const {
     return std::any_of(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
+                       [](ShadowClass c) { return c == ShadowClass::Penumbra; });
+  }
+  bool sameSharpClasses(std::size_t i, std::size_t j) const {
+    return std::equal(classes.begin() + (i + 1) * columns - sharpColumns,
+                      classes.begin() + (i + 1) * columns,
+                      classes.begin() + (j + 1) * columns - sharpColumns);
+  }
+  bool inSharpPenumbra(std::size_t i) const {
+    return std::any_of(classes.begin() + (i + 1) * columns - sharpColumns,
+                       classes.begin() + (i + 1) * columns,
                        [](ShadowClass c) { return c == ShadowClass::Penumbra; });
   }
   // Whether the value at `m`, a share t of the way from `a` to `b`, lies within `tolerance` of
@@ -103,8 +114,11 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
   if (interval.b - interval.a < 2) return;  // nothing between
   if (!c.sameClasses(interval.a, interval.b)) {
     // (b): a shadow edge lies between the ends. The midpoint says in which half; each half is
-    // then decided on its own, down to where the edge's interval is computed whole.
-    if (interval.b - interval.a >= 3) {
+    // then decided on its own, down to where the edge's interval is computed whole. Where a
+    // sharp source's class changes, the interval is computed whole: the sun's penumbra class
+    // holds the shadows inside its beam, whose edges a half with the same class at both ends
+    // can still hide.
+    if (interval.b - interval.a >= 3 && c.sameSharpClasses(interval.a, interval.b)) {
       request((interval.a + interval.b) / 2, out);
       midpoints_.push_back(interval);
     } else {
@@ -114,9 +128,10 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // Gentle curvature through the neighbouring intervals' ends on both sides (same face, same
     // classes): (e) at the interval's own length stands for (c). In a penumbra too: a shadow
     // edge of another occluder inside the interval bends the light there, and the second
-    // differences on the side it lies on straddle it.
+    // differences on the side it lies on straddle it. Not in a sharp source's penumbra (the
+    // sun's), which can hide a sliver of light between the ends.
     const Curvature around = curvature(interval, c);
-    if (around.sides == 2 && around.gentle) {
+    if (!c.inSharpPenumbra(interval.a) && around.sides == 2 && around.gentle) {
       interpolated_.push_back(interval);
       return;
     }
@@ -187,10 +202,11 @@ void IntervalPlan::decideHalf(const Interval& half, const Context& c,
 }
 
 std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes, int columns,
-                                            std::span<const SampleValues> checked) {
+                                            std::span<const SampleValues> checked,
+                                            int sharpColumns) {
   for (std::size_t i : requested_) known_[i] = 1;
   requested_.clear();
-  const Context c{classes, columns, checked};
+  const Context c{classes, columns, checked, sharpColumns};
   std::vector<std::size_t> out;
   // The halves of the last call first: every sample it asked for is known now, so (e) sees the
   // most neighbours. Then the midpoints it asked for, then the ends of the first pass.

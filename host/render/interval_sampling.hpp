@@ -11,7 +11,9 @@
 //       as an interval of its own, so the edge is bracketed down to an interval of 2 steps,
 //       which is computed whole;
 //   (c) the midpoint: an interval of 3 or more steps gets its midpoint computed, unless (e) at
-//       its own length passes on both sides (then it is interpolated whole); one of 2 steps goes
+//       its own length passes on both sides and no sharp source (the sun: its penumbra class
+//       covers the shadows inside its beam, where a sliver of sun can lie between two samples)
+//       is in penumbra at its ends (then it is interpolated whole); one of 2 steps goes
 //       to (e) directly, or is computed when a source is in penumbra. If the midpoint's classes
 //       differ from an end's, or the straight line between the ends misses any of its values by
 //       more than kMidpointMiss of that value, the two halves are decided as intervals of their
@@ -64,8 +66,9 @@ class IntervalPlan {
   // The next samples to compute, given the shadow classes (`classes[sample * columns + c]`)
   // and the checked values at every sample computed so far; empty once every interval is
   // decided.
+  // The last `sharpColumns` of the columns are sharp sources (rule (c)).
   std::vector<std::size_t> next(std::span<const ShadowClass> classes, int columns,
-                                std::span<const SampleValues> checked);
+                                std::span<const SampleValues> checked, int sharpColumns = 0);
   // Fills every interpolated sample between its interval's ends, `channels` values per sample
   // in `values` (exact samples already filled).
   void interpolate(std::span<float> values, int channels) const;

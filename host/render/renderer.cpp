@@ -326,8 +326,9 @@ struct Renderer::State {
     stats.exactSamples += first.size();
     // The plan checks what the image shows (RGB luminance) and the E AOV.
     const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
-    for (std::vector<std::size_t> round = plan.next(classes, columns, checked); !round.empty();
-         round = plan.next(classes, columns, checked)) {
+    const int sharpColumns = scene->sun ? 1 : 0;  // the sun's class is the last column
+    for (std::vector<std::size_t> round = plan.next(classes, columns, checked, sharpColumns);
+         !round.empty(); round = plan.next(classes, columns, checked, sharpColumns)) {
       evaluate(camera, layer, round, classes, advance);
       stats.exactSamples += round.size();
     }
