@@ -486,6 +486,17 @@ TEST(IntervalSampling, WithTheSunEightStaysWithinTheBoundsOfTheExactImage) {
   expectEightWithinTheBoundsOfTheExactImage(PENUMBRA_SOURCE_DIR "/data/office-sun.yaml", 0.2);
 }
 
+// With photometric luminaires (data/luminaires-office.yaml): six point-model downlights (sharp
+// shadows), a batwing and a wall-washer whose openings run as cells, hard-shadowed point sources.
+// Where a point sees some of a luminaire's cells, its light is a staircase of their shadows
+// (class Penumbra, ShadowEdges::Stepped), computed whole: classed Lit as long as any cell was
+// seen, the staircase passed the plan's checks and the floor under a desk came out 8.8 % at a
+// pixel off at this size (11 % at 640 × 360).
+TEST(IntervalSampling, WithLuminairesEightStaysWithinTheBoundsOfTheExactImage) {
+  expectEightWithinTheBoundsOfTheExactImage(PENUMBRA_SOURCE_DIR "/data/luminaires-office.yaml",
+                                            0.5);
+}
+
 TEST(Supersampling, APixelIsTheMeanOfItsSamples) {
   Scene scene = randomBoxes(3, 12);
   const View view = makeView({-1.0, -1.0, 2.0}, {2.0, 2.0, 0.3}, 40, 24);

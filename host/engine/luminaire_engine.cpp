@@ -30,6 +30,7 @@ struct LuminaireEngine::State {
   DeviceBuffer luminaires, tables, angles, candela, solids, planes;
   std::size_t sceneBytes = 0;
   std::vector<int> instanceOf;  // per point source, its placed instance
+  std::vector<int> cellsOf;     // per placed instance, its point sources (0: an exact opening)
   int placed = 0;               // placed instances
   // The area model's openings (built at the first scene that has some, kept for later ones).
   std::unique_ptr<IlluminanceEngine> openings;
@@ -57,6 +58,8 @@ void LuminaireEngine::setScene(const Scene& scene, const Vec3& origin, float eps
   s.placed = placedInstanceCount(scene);
   LuminaireKernelScene packed = packLuminaires(scene, origin);
   s.instanceOf = std::move(packed.instanceOf);
+  s.cellsOf.assign(static_cast<std::size_t>(s.placed), 0);
+  for (int instance : s.instanceOf) ++s.cellsOf[static_cast<std::size_t>(instance)];
   const std::vector<std::size_t> tables = {
       compute::byteSize(packed.luminaires), compute::byteSize(packed.tables),
       compute::byteSize(packed.angles),     compute::byteSize(packed.candela),
@@ -91,11 +94,18 @@ LuminaireEngine::Result LuminaireEngine::evaluate(std::span<const SamplePoint> p
   if (n == 0) return result;
   const PointSources point = evaluatePointSources(points);
   const std::size_t sources = s.instanceOf.size();
+  // A subdivided opening's cells are hard-shadowed point sources: where a point sees some of
+  // them and not the others, its light is a staircase of their shadows (Penumbra).
+  std::vector<int> seen(placed);
   for (std::size_t i = 0; i < n; ++i) {
     result.illuminance[i] = point.illuminance[i];
+    std::fill(seen.begin(), seen.end(), 0);
     for (std::size_t l = 0; l < sources; ++l)
-      if (point.seen[i * sources + l])
-        result.shadow[i * placed + static_cast<std::size_t>(s.instanceOf[l])] = ShadowClass::Lit;
+      if (point.seen[i * sources + l]) ++seen[static_cast<std::size_t>(s.instanceOf[l])];
+    for (std::size_t l = 0; l < placed; ++l)
+      if (s.cellsOf[l] > 0 && seen[l] > 0)
+        result.shadow[i * placed + l] =
+            seen[l] == s.cellsOf[l] ? ShadowClass::Lit : ShadowClass::Penumbra;
   }
   if (s.openingInstance.empty()) return result;
   const IlluminanceResult area = s.openings->evaluate(points, true);

@@ -32,8 +32,9 @@ class LuminaireEngine {
   struct Result {
     std::vector<double> illuminance;  // lx per point, every luminaire
     // [point * luminaires + l], per placed instance l: the point model Lit where the point sees
-    // the centre (or a cell) in front of its surface, else Umbra; the area model the opening's
-    // shadow class where light arrives, else Umbra.
+    // the centre in front of its surface, else Umbra; a subdivided opening Lit where it sees
+    // every cell, Penumbra where some, Umbra where none; the area model the opening's shadow
+    // class where light arrives, else Umbra.
     std::vector<ShadowClass> shadow;
     int luminaires = 0;  // placed luminaires (instances)
   };

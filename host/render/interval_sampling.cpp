@@ -7,28 +7,34 @@ namespace penumbra {
 
 struct IntervalPlan::Context {
   std::span<const ShadowClass> classes;
-  int columns = 0;
+  std::span<const ShadowEdges> edges;
   std::span<const SampleValues> checked;
-  int sharpColumns = 0;
 
+  std::size_t columns() const { return edges.size(); }
   bool sameClasses(std::size_t i, std::size_t j) const {
-    return std::equal(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
-                      classes.begin() + j * columns);
+    return std::equal(classes.begin() + i * columns(), classes.begin() + (i + 1) * columns(),
+                      classes.begin() + j * columns());
   }
   bool inPenumbra(std::size_t i) const {
-    return std::any_of(classes.begin() + i * columns, classes.begin() + (i + 1) * columns,
+    return std::any_of(classes.begin() + i * columns(), classes.begin() + (i + 1) * columns(),
                        [](ShadowClass c) { return c == ShadowClass::Penumbra; });
   }
-  bool sameSharpClasses(std::size_t i, std::size_t j) const {
-    return std::equal(classes.begin() + (i + 1) * columns - sharpColumns,
-                      classes.begin() + (i + 1) * columns,
-                      classes.begin() + (j + 1) * columns - sharpColumns);
+  // Whether the classes of the sources whose edges are not soft are the same at i and j.
+  bool sameHardClasses(std::size_t i, std::size_t j) const {
+    for (std::size_t c = 0; c < columns(); ++c)
+      if (edges[c] != ShadowEdges::Soft && classes[i * columns() + c] != classes[j * columns() + c])
+        return false;
+    return true;
   }
-  bool inSharpPenumbra(std::size_t i) const {
-    return std::any_of(classes.begin() + (i + 1) * columns - sharpColumns,
-                       classes.begin() + (i + 1) * columns,
-                       [](ShadowClass c) { return c == ShadowClass::Penumbra; });
+  // Whether a source whose edges are of `kind` is in penumbra at i.
+  bool inPenumbraOf(std::size_t i, bool (*kind)(ShadowEdges)) const {
+    for (std::size_t c = 0; c < columns(); ++c)
+      if (kind(edges[c]) && classes[i * columns() + c] == ShadowClass::Penumbra) return true;
+    return false;
   }
+  static bool hard(ShadowEdges e) { return e != ShadowEdges::Soft; }
+  static bool stepped(ShadowEdges e) { return e == ShadowEdges::Stepped; }
+
   // Whether the value at `m`, a share t of the way from `a` to `b`, lies within `tolerance` of
   // the line between them (relative to the largest of the three), in every channel.
   bool onLine(std::size_t a, std::size_t m, std::size_t b, double t, double tolerance) const {
@@ -112,13 +118,16 @@ void IntervalPlan::requestInterior(const Interval& interval, std::vector<std::si
 void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
                               std::vector<std::size_t>& out) {
   if (interval.b - interval.a < 2) return;  // nothing between
-  if (!c.sameClasses(interval.a, interval.b)) {
+  if (c.inPenumbraOf(interval.a, Context::stepped) ||
+      c.inPenumbraOf(interval.b, Context::stepped)) {
+    requestInterior(interval, out);  // (b): a staircase of hard shadows
+  } else if (!c.sameClasses(interval.a, interval.b)) {
     // (b): a shadow edge lies between the ends. The midpoint says in which half; each half is
     // then decided on its own, down to where the edge's interval is computed whole. Where a
-    // sharp source's class changes, the interval is computed whole: the sun's penumbra class
-    // holds the shadows inside its beam, whose edges a half with the same class at both ends
-    // can still hide.
-    if (interval.b - interval.a >= 3 && c.sameSharpClasses(interval.a, interval.b)) {
+    // sharp source's class changes, the interval is computed whole: a half with the same class
+    // at both ends can still hide an edge of its hard shadows (the sun's penumbra class holds
+    // the shadows inside its beam).
+    if (interval.b - interval.a >= 3 && c.sameHardClasses(interval.a, interval.b)) {
       request((interval.a + interval.b) / 2, out);
       midpoints_.push_back(interval);
     } else {
@@ -131,7 +140,7 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // differences on the side it lies on straddle it. Not in a sharp source's penumbra (the
     // sun's), which can hide a sliver of light between the ends.
     const Curvature around = curvature(interval, c);
-    if (!c.inSharpPenumbra(interval.a) && around.sides == 2 && around.gentle) {
+    if (!c.inPenumbraOf(interval.a, Context::hard) && around.sides == 2 && around.gentle) {
       interpolated_.push_back(interval);
       return;
     }
@@ -201,12 +210,12 @@ void IntervalPlan::decideHalf(const Interval& half, const Context& c,
   }
 }
 
-std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes, int columns,
-                                            std::span<const SampleValues> checked,
-                                            int sharpColumns) {
+std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes,
+                                            std::span<const ShadowEdges> edges,
+                                            std::span<const SampleValues> checked) {
   for (std::size_t i : requested_) known_[i] = 1;
   requested_.clear();
-  const Context c{classes, columns, checked, sharpColumns};
+  const Context c{classes, edges, checked};
   std::vector<std::size_t> out;
   // The halves of the last call first: every sample it asked for is known now, so (e) sees the
   // most neighbours. Then the midpoints it asked for, then the ends of the first pass.

@@ -9,11 +9,11 @@
 //       class (lit / penumbra / umbra; "receives nothing" counts as umbra) has a shadow edge
 //       between them: one of 3 or more steps gets its midpoint computed and each half is decided
 //       as an interval of its own, so the edge is bracketed down to an interval of 2 steps,
-//       which is computed whole;
+//       which is computed whole; where a sharp or stepped source's class differs, and wherever
+//       a stepped source is in penumbra at an end, the interval is computed whole;
 //   (c) the midpoint: an interval of 3 or more steps gets its midpoint computed, unless (e) at
-//       its own length passes on both sides and no sharp source (the sun: its penumbra class
-//       covers the shadows inside its beam, where a sliver of sun can lie between two samples)
-//       is in penumbra at its ends (then it is interpolated whole); one of 2 steps goes
+//       its own length passes on both sides and no sharp or stepped source (ShadowEdges) is in
+//       penumbra at its ends (then it is interpolated whole); one of 2 steps goes
 //       to (e) directly, or is computed when a source is in penumbra. If the midpoint's classes
 //       differ from an end's, or the straight line between the ends misses any of its values by
 //       more than kMidpointMiss of that value, the two halves are decided as intervals of their
@@ -39,6 +39,15 @@
 #include "shadow/shadow_class.hpp"
 
 namespace penumbra {
+
+// What a source's shadow class says of its light between two samples (rules (b) and (c)).
+enum class ShadowEdges : uint8_t {
+  Soft,     // an area source's: its light is smooth across its penumbra
+  Sharp,    // the sun's: its penumbra class also holds the shadows inside its beam, where a
+            // sliver of sun can lie between two samples of that class
+  Stepped,  // a subdivided luminaire's: in its penumbra (some cells hidden) the light is a
+            // staircase of the cells' hard shadows, which no line between samples follows
+};
 
 // Values per sample that the plan checks (E in lx, the RGB luminance), `channels` per sample.
 struct SampleValues {
@@ -66,9 +75,10 @@ class IntervalPlan {
   // The next samples to compute, given the shadow classes (`classes[sample * columns + c]`)
   // and the checked values at every sample computed so far; empty once every interval is
   // decided.
-  // The last `sharpColumns` of the columns are sharp sources (rule (c)).
-  std::vector<std::size_t> next(std::span<const ShadowClass> classes, int columns,
-                                std::span<const SampleValues> checked, int sharpColumns = 0);
+  // `edges` has one entry per class column.
+  std::vector<std::size_t> next(std::span<const ShadowClass> classes,
+                                std::span<const ShadowEdges> edges,
+                                std::span<const SampleValues> checked);
   // Fills every interpolated sample between its interval's ends, `channels` values per sample
   // in `values` (exact samples already filled).
   void interpolate(std::span<float> values, int channels) const;

@@ -152,10 +152,21 @@ struct Renderer::State {
   // centre, Umbra where not; the area model its opening's class), then the sun's
   // (sunShadowClass), so that no shadow edge is interpolated across. The sky has none: its
   // shadows are soft, and the plan's checks of the values decide there.
-  int classColumns() const {
-    int columns = static_cast<int>(scene->sources.size());
-    for (const Luminaire& l : scene->luminaires) columns += static_cast<int>(l.instances.size());
-    return columns + (scene->sun ? 1 : 0);
+  int classColumns() const { return static_cast<int>(classEdges().size()); }
+
+  // What each class column's shadows are (IntervalPlan's rules (b) and (c)): the Lambertian
+  // sources' and the exact openings' soft, a subdivided opening's a staircase of its cells' hard
+  // shadows, the point model's and the sun's sharp.
+  std::vector<ShadowEdges> classEdges() const {
+    std::vector<ShadowEdges> edges(scene->sources.size(), ShadowEdges::Soft);
+    for (const Luminaire& l : scene->luminaires) {
+      ShadowEdges e = ShadowEdges::Sharp;
+      if (l.model == LuminaireModel::Area && l.opening)
+        e = l.opening->subdivided() ? ShadowEdges::Stepped : ShadowEdges::Soft;
+      edges.insert(edges.end(), l.instances.size(), e);
+    }
+    if (scene->sun) edges.push_back(ShadowEdges::Sharp);
+    return edges;
   }
 
   // Exact illuminance and luminance at `indices` (in batches of kBatch), and each one's shadow
@@ -326,9 +337,9 @@ struct Renderer::State {
     stats.exactSamples += first.size();
     // The plan checks what the image shows (RGB luminance) and the E AOV.
     const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
-    const int sharpColumns = scene->sun ? 1 : 0;  // the sun's class is the last column
-    for (std::vector<std::size_t> round = plan.next(classes, columns, checked, sharpColumns);
-         !round.empty(); round = plan.next(classes, columns, checked, sharpColumns)) {
+    const std::vector<ShadowEdges> edges = classEdges();
+    for (std::vector<std::size_t> round = plan.next(classes, edges, checked); !round.empty();
+         round = plan.next(classes, edges, checked)) {
       evaluate(camera, layer, round, classes, advance);
       stats.exactSamples += round.size();
     }
