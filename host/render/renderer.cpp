@@ -230,56 +230,43 @@ struct Renderer::State {
     }
   }
 
-  // The interreflected light per channel at `samples` (3 floats per sample into `indirect`):
-  // from the field, or gathered exactly at every sample.
-  void indirectAt(const Camera& camera, const SampleLayer& layer,
-                  const std::vector<std::size_t>& samples, bool exact, std::vector<float>& indirect,
-                  const std::function<void(std::size_t)>& done) {
-    std::vector<SamplePoint> points;
-    std::vector<FacePoint> onFaces;
-    std::vector<float> channels;
-    for (std::size_t start = 0; start < samples.size(); start += kBatch) {
-      const std::size_t end = std::min(samples.size(), start + kBatch);
-      points.resize(end - start);
-      forEachSample(end - start, [&](std::size_t j) {
-        points[j] = surfacePoint(camera, layer.visibility, samples[start + j]);
-      });
-      if (exact) {
-        const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
-        for (std::size_t j = start; j < end; ++j)
-          for (int c = 0; c < 3; ++c)
-            indirect[samples[j] * 3 + c] = static_cast<float>(e[j - start][c]);
-      } else {
-        onFaces.resize(points.size());
-        channels.assign(onFaces.size() * 3, 0.0f);
-        forEachSample(points.size(), [&](std::size_t j) {
-          const VisibleFace& face =
-              visibility.visible().face(layer.visibility.faceIds[samples[start + j]]);
-          onFaces[j] = FacePoint{points[j].position, face.index, face.face};
-        });
-        field->evaluate(onFaces, channels);
-        forEachSample(points.size(), [&](std::size_t j) {
-          for (int c = 0; c < 3; ++c) indirect[samples[start + j] * 3 + c] = channels[j * 3 + c];
-        });
-      }
-      done(end - start);
-    }
-  }
-
-  // Adds the interreflected light to the layer's surface samples (its direct light complete).
+  // Adds the interreflected light to the layer's surface samples (its direct light complete):
+  // from the field, or gathered exactly at every sample, a batch at a time.
   void addIndirect(const Camera& camera, SampleLayer& layer,
                    const std::vector<std::size_t>& surface, bool exact,
                    const std::function<void(std::size_t)>& done) {
-    std::vector<float> indirect(layer.visibility.faceIds.size() * 3, 0.0f);  // lx per channel
-    indirectAt(camera, layer, surface, exact, indirect, done);
-    forEachSample(surface.size(), [&](std::size_t k) {
-      const std::size_t i = surface[k];
-      const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
-      const Vec3 e(indirect[i * 3], indirect[i * 3 + 1], indirect[i * 3 + 2]);
-      const Vec3 l = solidReflectance[face.index].cwiseProduct(e) / std::numbers::pi;
-      layer.illuminance[i] += static_cast<float>(photometric(e));
-      for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
-    });
+    std::vector<SamplePoint> points;
+    std::vector<FacePoint> onFaces;
+    std::vector<float> channels;  // lx per channel, 3 per sample of the batch
+    for (std::size_t start = 0; start < surface.size(); start += kBatch) {
+      const std::size_t end = std::min(surface.size(), start + kBatch);
+      points.resize(end - start);
+      forEachSample(end - start, [&](std::size_t j) {
+        points[j] = surfacePoint(camera, layer.visibility, surface[start + j]);
+      });
+      channels.assign(points.size() * 3, 0.0f);
+      if (exact) {
+        const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
+        for (std::size_t j = 0; j < points.size(); ++j)
+          for (int c = 0; c < 3; ++c) channels[j * 3 + c] = static_cast<float>(e[j][c]);
+      } else {
+        onFaces.resize(points.size());
+        forEachSample(points.size(), [&](std::size_t j) {
+          const VisibleFace& face =
+              visibility.visible().face(layer.visibility.faceIds[surface[start + j]]);
+          onFaces[j] = FacePoint{points[j].position, face.index, face.face};
+        });
+        field->evaluate(onFaces, channels);
+      }
+      forEachSample(points.size(), [&](std::size_t j) {
+        const std::size_t i = surface[start + j];
+        const Vec3 e(channels[j * 3], channels[j * 3 + 1], channels[j * 3 + 2]);
+        const Vec3 l = solidReflectance[points[j].solid].cwiseProduct(e) / std::numbers::pi;
+        layer.illuminance[i] += static_cast<float>(photometric(e));
+        for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
+      });
+      done(end - start);
+    }
   }
 
   SampleLayer renderSamples(const Camera& camera, int interval, bool exactIndirect,
