@@ -65,7 +65,8 @@ class IntervalPlan {
   // above, because each half then misses by a quarter of it (for a quadratic).
   static constexpr double kMidpointMiss = 4 * kInterpolationError;
 
-  // `faceIds` row-major, width × height; `needed` marks the samples that need E.
+  // `faceIds` row-major, width × height, kept by reference: they must outlive the plan;
+  // `needed` marks the samples that need E.
   IntervalPlan(int width, int height, std::span<const uint32_t> faceIds,
                std::span<const uint8_t> needed, int interval);
 
@@ -103,7 +104,7 @@ class IntervalPlan {
   Curvature curvature(const Interval& interval, const Context& c) const;
 
   int width_ = 0;
-  std::vector<uint32_t> faceIds_;
+  std::span<const uint32_t> faceIds_;  // the caller's, which outlive the plan
   std::vector<uint8_t> known_;  // 1: computed exactly, values given to the last next()
   std::vector<std::size_t> first_;
   std::vector<std::size_t> requested_;  // returned by the last next(): known at the next call
