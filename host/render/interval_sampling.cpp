@@ -63,9 +63,7 @@ struct IntervalPlan::Context {
 
 IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> faceIds,
                            std::span<const uint8_t> needed, int interval)
-    : width_(width),
-      faceIds_(faceIds),
-      known_(static_cast<std::size_t>(width) * height, 0) {
+    : width_(width), faceIds_(faceIds), known_(static_cast<std::size_t>(width) * height, 0) {
   const int k = std::max(interval, 1);
   // (a) in the other direction: a sample whose neighbour above or below shows another face (or
   // none) is exact, and cuts its interval there. The light changes fastest where surfaces meet

@@ -105,7 +105,7 @@ class IntervalPlan {
 
   int width_ = 0;
   std::span<const uint32_t> faceIds_;  // the caller's, which outlive the plan
-  std::vector<uint8_t> known_;  // 1: computed exactly, values given to the last next()
+  std::vector<uint8_t> known_;         // 1: computed exactly, values given to the last next()
   std::vector<std::size_t> first_;
   std::vector<std::size_t> requested_;  // returned by the last next(): known at the next call
   std::vector<Interval> ends_;          // one face throughout, ends computed (also failed halves)
