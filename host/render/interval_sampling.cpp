@@ -11,29 +11,20 @@ struct IntervalPlan::Context {
   std::span<const SampleValues> checked;
 
   std::size_t columns() const { return edges.size(); }
-  bool sameClasses(std::size_t i, std::size_t j) const {
-    return std::equal(classes.begin() + i * columns(), classes.begin() + (i + 1) * columns(),
-                      classes.begin() + j * columns());
-  }
-  bool inPenumbra(std::size_t i) const {
-    return std::any_of(classes.begin() + i * columns(), classes.begin() + (i + 1) * columns(),
-                       [](ShadowClass c) { return c == ShadowClass::Penumbra; });
-  }
-  // Whether the classes of the sources whose edges are not soft are the same at i and j.
-  bool sameHardClasses(std::size_t i, std::size_t j) const {
+  // Whether the classes at i and j are the same in every column whose edges are `from` or
+  // harder (ShadowEdges' order).
+  bool sameClasses(std::size_t i, std::size_t j, ShadowEdges from = ShadowEdges::Soft) const {
     for (std::size_t c = 0; c < columns(); ++c)
-      if (edges[c] != ShadowEdges::Soft && classes[i * columns() + c] != classes[j * columns() + c])
+      if (edges[c] >= from && classes[i * columns() + c] != classes[j * columns() + c])
         return false;
     return true;
   }
-  // Whether a source whose edges are of `kind` is in penumbra at i.
-  bool inPenumbraOf(std::size_t i, bool (*kind)(ShadowEdges)) const {
+  // Whether a source whose edges are `from` or harder is in penumbra at i.
+  bool inPenumbra(std::size_t i, ShadowEdges from = ShadowEdges::Soft) const {
     for (std::size_t c = 0; c < columns(); ++c)
-      if (kind(edges[c]) && classes[i * columns() + c] == ShadowClass::Penumbra) return true;
+      if (edges[c] >= from && classes[i * columns() + c] == ShadowClass::Penumbra) return true;
     return false;
   }
-  static bool hard(ShadowEdges e) { return e != ShadowEdges::Soft; }
-  static bool stepped(ShadowEdges e) { return e == ShadowEdges::Stepped; }
 
   // Whether the value at `m`, a share t of the way from `a` to `b`, lies within `tolerance` of
   // the line between them (relative to the largest of the three), in every channel.
@@ -116,8 +107,8 @@ void IntervalPlan::requestInterior(const Interval& interval, std::vector<std::si
 void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
                               std::vector<std::size_t>& out) {
   if (interval.b - interval.a < 2) return;  // nothing between
-  if (c.inPenumbraOf(interval.a, Context::stepped) ||
-      c.inPenumbraOf(interval.b, Context::stepped)) {
+  if (c.inPenumbra(interval.a, ShadowEdges::Stepped) ||
+      c.inPenumbra(interval.b, ShadowEdges::Stepped)) {
     requestInterior(interval, out);  // (b): a staircase of hard shadows
   } else if (!c.sameClasses(interval.a, interval.b)) {
     // (b): a shadow edge lies between the ends. The midpoint says in which half; each half is
@@ -125,7 +116,7 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // sharp source's class changes, the interval is computed whole: a half with the same class
     // at both ends can still hide an edge of its hard shadows (the sun's penumbra class holds
     // the shadows inside its beam).
-    if (interval.b - interval.a >= 3 && c.sameHardClasses(interval.a, interval.b)) {
+    if (interval.b - interval.a >= 3 && c.sameClasses(interval.a, interval.b, ShadowEdges::Sharp)) {
       request((interval.a + interval.b) / 2, out);
       midpoints_.push_back(interval);
     } else {
@@ -138,7 +129,7 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // differences on the side it lies on straddle it. Not in a sharp source's penumbra (the
     // sun's), which can hide a sliver of light between the ends.
     const Curvature around = curvature(interval, c);
-    if (!c.inPenumbraOf(interval.a, Context::hard) && around.sides == 2 && around.gentle) {
+    if (!c.inPenumbra(interval.a, ShadowEdges::Sharp) && around.sides == 2 && around.gentle) {
       interpolated_.push_back(interval);
       return;
     }

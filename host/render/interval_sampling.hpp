@@ -40,7 +40,8 @@
 
 namespace penumbra {
 
-// What a source's shadow class says of its light between two samples (rules (b) and (c)).
+// What a source's shadow class says of its light between two samples (rules (b) and (c)),
+// ordered by how much less of it may be interpolated.
 enum class ShadowEdges : uint8_t {
   Soft,     // an area source's: its light is smooth across its penumbra
   Sharp,    // the sun's: its penumbra class also holds the shadows inside its beam, where a

@@ -79,6 +79,8 @@ struct Renderer::State {
   std::unique_ptr<IndirectField> field;
   TransferCache transfers;          // kept across setScene: a sweep's cases share transfers
   std::vector<Vec3> sourceColours;  // luminanceColour per source
+  // The interval plan's shadow-class columns, what each one's shadows are (classEdges).
+  std::vector<ShadowEdges> shadowEdges;
   std::vector<Vec3> solidReflectance;
   SkyBackground background;            // what rays that meet no solid show
   std::vector<double> transmittances;  // 1 and each opening's τ: the sun's lit levels
@@ -131,6 +133,7 @@ struct Renderer::State {
     sourceColours.clear();
     for (const Source& source : scene->sources)
       sourceColours.push_back(luminanceColour(source.color));
+    shadowEdges = classEdges();
     solidReflectance.clear();
     for (const Solid& solid : scene->solids)
       solidReflectance.push_back(solid.material >= 0 ? scene->materials[solid.material].reflectance
@@ -152,7 +155,7 @@ struct Renderer::State {
   // centre, Umbra where not; the area model its opening's class), then the sun's
   // (sunShadowClass), so that no shadow edge is interpolated across. The sky has none: its
   // shadows are soft, and the plan's checks of the values decide there.
-  int classColumns() const { return static_cast<int>(classEdges().size()); }
+  int classColumns() const { return static_cast<int>(shadowEdges.size()); }
 
   // What each class column's shadows are (IntervalPlan's rules (b) and (c)): the Lambertian
   // sources' and the exact openings' soft, a subdivided opening's a staircase of its cells' hard
@@ -324,9 +327,8 @@ struct Renderer::State {
     stats.exactSamples += first.size();
     // The plan checks what the image shows (RGB luminance) and the E AOV.
     const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
-    const std::vector<ShadowEdges> edges = classEdges();
-    for (std::vector<std::size_t> round = plan.next(classes, edges, checked); !round.empty();
-         round = plan.next(classes, edges, checked)) {
+    for (std::vector<std::size_t> round = plan.next(classes, shadowEdges, checked); !round.empty();
+         round = plan.next(classes, shadowEdges, checked)) {
       evaluate(camera, layer, round, classes, advance);
       stats.exactSamples += round.size();
     }
