@@ -7,11 +7,11 @@
 // wall time on a shared machine), the direct light's time at k = 1 (direct1_s) and the
 // interreflected light's at k (indirectk_s), and below each view the stages of the best k = 1
 // and k renders (RenderStats: visibility, the direct light with the interval plan, the
-// interreflected light, shading; wall). With interreflection the renderer's field of
-// interreflected light (radiosity/indirect_field.hpp) is shared by every render of the scene:
-// first1_s is the view's first full-size render (k = 1, gathering what the field lacks for it),
-// field_nodes and field_s what the field has gathered and spent so far (the warm-up included);
-// the best-of-R renders find it complete.
+// interreflected light, shading; wall) and the pixels of the two largest errors. With
+// interreflection the renderer's field of interreflected light (radiosity/indirect_field.hpp) is
+// shared by every render of the scene: first1_s is the view's first full-size render (k = 1,
+// gathering what the field lacks for it), field_nodes and field_s what the field has gathered and
+// spent so far (the warm-up included); the best-of-R renders find it complete.
 //   usage: interval_bench [--device cpu|gpu|<index>] [--size WxH] [--k K] [--repeat R]
 //                         [--direct-only] [--view NAME] [--scene FILE]
 #include <fmt/format.h>
@@ -120,10 +120,17 @@ int main(int argc, char** argv) {
     std::nth_element(sorted.begin(), sorted.begin() + at, sorted.end());
     const double p99 = sorted[at];
     double worst = 0, worstRelative = 0;
+    std::size_t worstAt = 0, worstRelativeAt = 0;
     for (std::size_t i = 0; i < y1.size(); ++i) {
       const double d = std::abs(yk[i] - y1[i]);
-      worst = std::max(worst, d);
-      if (y1[i] > 0.01 * p99) worstRelative = std::max(worstRelative, d / y1[i]);
+      if (d > worst) {
+        worst = d;
+        worstAt = i;
+      }
+      if (y1[i] > 0.01 * p99 && d / y1[i] > worstRelative) {
+        worstRelative = d / y1[i];
+        worstRelativeAt = i;
+      }
     }
     const IndirectFieldStats* field = renderer.indirectField();
     fmt::print(
@@ -143,6 +150,11 @@ int main(int argc, char** argv) {
           interval, stats.visibilitySeconds, stats.illuminanceSeconds, stats.indirectSeconds,
           stats.shadingSeconds);
     }
+    // Where the two worst errors are, to look at them (pixel x, y from the top left).
+    for (const auto& [what, i] :
+         {std::pair{"of p99", worstAt}, std::pair{"per pixel", worstRelativeAt}})
+      fmt::print("  worst {} at pixel ({}, {}): Y {:.2f} cd/m2 (k = 1), {:.2f} (k = {})\n", what,
+                 i % width, i / width, y1[i], yk[i], k);
   }
   return 0;
 }

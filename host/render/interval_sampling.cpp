@@ -190,7 +190,12 @@ IntervalPlan::Curvature IntervalPlan::curvature(const Interval& interval, const 
 
 void IntervalPlan::decideHalf(const Interval& half, const Context& c,
                               std::vector<std::size_t>& out) {
-  if (curvature(half, c).gentle) {  // (e)
+  // (e). In a penumbra, on both sides: a penumbra is an S (the share of a disk or a polygon
+  // seen past an edge) whose second differences vanish at its inflection, where a midpoint lies
+  // on the line between the ends, so the side towards the penumbra's edge must be seen too.
+  const Curvature around = curvature(half, c);
+  const bool inPenumbra = c.inPenumbra(half.a) || c.inPenumbra(half.b);
+  if (around.gentle && (!inPenumbra || around.sides == 2)) {
     interpolated_.push_back(half);
   } else if (half.b - half.a >= 3) {
     ends_.push_back(half);  // (c) again, as an interval of its own
