@@ -4,14 +4,16 @@
 // |Y_k − Y_1| over the 99th percentile of Y_1 (all pixels), the largest relative error among the
 // pixels above 1 % of that percentile, the share of samples computed exactly, the render's wall
 // and CPU time (each the best of R; no files written; CPU time, of every thread, is steadier than
-// wall time on a shared machine), the direct light's time at k = 1 (direct1_s) and the
-// interreflected light's at k (indirectk_s), and below each view the stages of the best k = 1
-// and k renders (RenderStats: visibility, the direct light with the interval plan, the
-// interreflected light, shading; wall) and the pixels of the two largest errors. With
-// interreflection the renderer's field of interreflected light (radiosity/indirect_field.hpp) is
-// shared by every render of the scene: first1_s is the view's first full-size render (k = 1,
-// gathering what the field lacks for it), field_nodes and field_s what the field has gathered and
-// spent so far (the warm-up included); the best-of-R renders find it complete.
+// wall time on a shared machine), the speed-up k = 1 over k from those best times and as the
+// median of R pairs rendered in turn (pair_x, pair_cpu: each pair meets the same load), the direct
+// light's time at k = 1 (direct1_s) and the interreflected light's at k (indirectk_s), and below
+// each view the stages of the best k = 1 and k renders (RenderStats: visibility, the direct light
+// with the interval plan, the interreflected light, shading; wall) and the pixels of the two
+// largest errors. With interreflection the renderer's field of interreflected light
+// (radiosity/indirect_field.hpp) is shared by every render of the scene: first1_s is the view's
+// first full-size render (k = 1, gathering what the field lacks for it), field_nodes and field_s
+// what the field has gathered and spent so far (the warm-up included); the best-of-R renders find
+// it complete.
 //   usage: interval_bench [--device cpu|gpu|<index>] [--size WxH] [--k K] [--repeat R]
 //                         [--direct-only] [--view NAME] [--scene FILE]
 #include <fmt/format.h>
@@ -48,22 +50,30 @@ struct Timed {
   double cpuSeconds = 1e30;  // CPU time of the process, every thread (PoCL's included)
 };
 
-Timed bestOf(Renderer& renderer, const View& view, int k, int repeat) {
-  Timed best;
-  for (int r = 0; r < repeat; ++r) {
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpuStart = std::clock();
-    RenderedView rendered = renderer.render(view, RenderOptions{k, 1, {}});
-    const double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    const double s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    best.cpuSeconds = std::min(best.cpuSeconds, cpu);
-    if (s < best.seconds) {
-      best.view = std::move(rendered);
-      best.seconds = s;
-    }
+// One render's time, and the render itself.
+Timed timed(Renderer& renderer, const View& view, int k) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpuStart = std::clock();
+  Timed t;
+  t.view = renderer.render(view, RenderOptions{k, 1, {}});
+  t.cpuSeconds = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+  t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return t;
+}
+
+// Keeps the faster render (wall) and the least CPU time.
+void keepBest(Timed& best, Timed&& t) {
+  best.cpuSeconds = std::min(best.cpuSeconds, t.cpuSeconds);
+  if (t.seconds < best.seconds) {
+    best.seconds = t.seconds;
+    best.view = std::move(t.view);
   }
-  return best;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -98,11 +108,11 @@ int main(int argc, char** argv) {
              directOnly ? "direct only" : "total (direct + interreflected)", k, device.info().name,
              repeat);
   fmt::print(
-      "{:<12} {:>9} {:>11} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8} {:>9} {:>11} "
-      "{:>11} {:>8} {:>9}\n",
+      "{:<12} {:>9} {:>11} {:>7} {:>8} {:>9} {:>9} {:>9} {:>8} {:>8} {:>8} {:>8} {:>8} {:>8} "
+      "{:>9} {:>11} {:>11} {:>8} {:>9}\n",
       "view", "p99_cdm2", "max_of_p99%", "pixel%", "exact_%", "first1_s", "render1_s", "renderk_s",
-      "speed-up", "cpu1_s", "cpuk_s", "cpu_x", "direct1_s", "indirectk_s", "field_nodes", "field_s",
-      "gatheredk");
+      "speed-up", "pair_x", "cpu1_s", "cpuk_s", "cpu_x", "pair_cpu", "direct1_s", "indirectk_s",
+      "field_nodes", "field_s", "gatheredk");
   for (const View& full : scene.views) {
     if (!only.empty() && full.name != only) continue;
     View view = full;
@@ -110,9 +120,17 @@ int main(int argc, char** argv) {
     view.height = height;
     renderer.render(View{view.name, view.eye, view.target, view.up, view.fovDegrees, 64, 36},
                     RenderOptions{1, 1, {}});  // warm-up: kernels built and cached
-    const Timed first = bestOf(renderer, view, 1, 1);
-    const Timed exact = bestOf(renderer, view, 1, repeat);
-    const Timed sampled = bestOf(renderer, view, k, repeat);
+    const Timed first = timed(renderer, view, 1);
+    // k = 1 and k rendered in turn, so that each pair meets the same load on a shared machine.
+    Timed exact, sampled;
+    std::vector<double> pairRatio, pairCpuRatio;
+    for (int r = 0; r < repeat; ++r) {
+      Timed one = timed(renderer, view, 1), some = timed(renderer, view, k);
+      pairRatio.push_back(one.seconds / some.seconds);
+      pairCpuRatio.push_back(one.cpuSeconds / some.cpuSeconds);
+      keepBest(exact, std::move(one));
+      keepBest(sampled, std::move(some));
+    }
     const std::vector<double> y1 = luminanceY(exact.view.luminance),
                               yk = luminanceY(sampled.view.luminance);
     std::vector<double> sorted = y1;
@@ -134,14 +152,14 @@ int main(int argc, char** argv) {
     }
     const IndirectFieldStats* field = renderer.indirectField();
     fmt::print(
-        "{:<12} {:>9.2f} {:>11.4f} {:>7.4f} {:>8.1f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.2f} {:>8.3f} "
-        "{:>8.3f} {:>8.2f} {:>9.3f} {:>11.3f} {:>11} {:>8.3f} {:>9}\n",
+        "{:<12} {:>9.2f} {:>11.4f} {:>7.4f} {:>8.1f} {:>9.3f} {:>9.3f} {:>9.3f} {:>8.2f} {:>8.2f} "
+        "{:>8.3f} {:>8.3f} {:>8.2f} {:>8.2f} {:>9.3f} {:>11.3f} {:>11} {:>8.3f} {:>9}\n",
         view.name, p99, 100 * worst / p99, 100 * worstRelative,
         100 * sampled.view.stats.exactShare(), first.seconds, exact.seconds, sampled.seconds,
-        exact.seconds / sampled.seconds, exact.cpuSeconds, sampled.cpuSeconds,
-        exact.cpuSeconds / sampled.cpuSeconds, exact.view.stats.illuminanceSeconds,
-        sampled.view.stats.indirectSeconds, field ? field->nodes : 0, field ? field->seconds : 0.0,
-        sampled.view.stats.gatheredSamples);
+        exact.seconds / sampled.seconds, median(pairRatio), exact.cpuSeconds, sampled.cpuSeconds,
+        exact.cpuSeconds / sampled.cpuSeconds, median(pairCpuRatio),
+        exact.view.stats.illuminanceSeconds, sampled.view.stats.indirectSeconds,
+        field ? field->nodes : 0, field ? field->seconds : 0.0, sampled.view.stats.gatheredSamples);
     for (const auto& [interval, timed] : {std::pair{1, &exact}, std::pair{k, &sampled}}) {
       const RenderStats& stats = timed->view.stats;
       fmt::print(
