@@ -58,7 +58,7 @@ PlannedRow planRow(const SunPatchEdge& row, int width, int k, ShadowEdges shadow
   for (std::vector<std::size_t> round = plan.next(classes, edges, checked); !round.empty();
        round = plan.next(classes, edges, checked))
     compute(round);
-  plan.interpolate(planned.values, 1);
+  plan.interpolate(checked);
   return planned;
 }
 

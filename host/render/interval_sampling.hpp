@@ -52,9 +52,10 @@ enum class ShadowEdges : uint8_t {
             // staircase of the cells' hard shadows, which no line between samples follows
 };
 
-// Values per sample that the plan checks (E in lx, the RGB luminance), `channels` per sample.
+// Values per sample that the plan checks and fills (E in lx, the RGB luminance), `channels` per
+// sample.
 struct SampleValues {
-  std::span<const float> values;
+  std::span<float> values;
   int channels = 1;
 };
 
@@ -83,9 +84,9 @@ class IntervalPlan {
   std::vector<std::size_t> next(std::span<const ShadowClass> classes,
                                 std::span<const ShadowEdges> edges,
                                 std::span<const SampleValues> checked);
-  // Fills every interpolated sample between its interval's ends, `channels` values per sample
-  // in `values` (exact samples already filled).
-  void interpolate(std::span<float> values, int channels) const;
+  // Fills every interpolated sample between its interval's ends, in each set of values (exact
+  // samples already filled).
+  void interpolate(std::span<const SampleValues> sets) const;
 
  private:
   struct Interval {

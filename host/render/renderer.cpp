@@ -332,8 +332,7 @@ struct Renderer::State {
       evaluate(camera, layer, round, classes, advance);
       stats.exactSamples += round.size();
     }
-    plan.interpolate(layer.illuminance, 1);
-    plan.interpolate(layer.rgb, 3);
+    plan.interpolate(checked);
     stats.illuminanceSeconds += secondsSince(start);
     if (interreflection) {
       start = Clock::now();
