@@ -1,5 +1,9 @@
 #include "render/interval_sampling.hpp"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -94,22 +98,19 @@ IntervalPlan::IntervalPlan(int width, int height, std::span<const uint32_t> face
   requested_ = first_;
 }
 
-void IntervalPlan::request(std::size_t sample, std::vector<std::size_t>& out) {
-  if (known_[sample]) return;
-  known_[sample] = 2;  // requested: known once its round is computed
-  out.push_back(sample);
+void IntervalPlan::request(std::size_t sample, Decisions& d) const {
+  if (known_[sample] == 0) d.out.push_back(sample);  // marked requested once the round is decided
 }
 
-void IntervalPlan::requestInterior(const Interval& interval, std::vector<std::size_t>& out) {
-  for (std::size_t i = interval.a + 1; i < interval.b; ++i) request(i, out);
+void IntervalPlan::requestInterior(const Interval& interval, Decisions& d) const {
+  for (std::size_t i = interval.a + 1; i < interval.b; ++i) request(i, d);
 }
 
-void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
-                              std::vector<std::size_t>& out) {
+void IntervalPlan::decideEnds(const Interval& interval, const Context& c, Decisions& d) const {
   if (interval.b - interval.a < 2) return;  // nothing between
   if (c.inPenumbra(interval.a, ShadowEdges::Stepped) ||
       c.inPenumbra(interval.b, ShadowEdges::Stepped)) {
-    requestInterior(interval, out);  // (b): a staircase of hard shadows
+    requestInterior(interval, d);  // (b): a staircase of hard shadows
   } else if (!c.sameClasses(interval.a, interval.b)) {
     // (b): a shadow edge lies between the ends. The midpoint says in which half; each half is
     // then decided on its own, down to where the edge's interval is computed whole. Where a
@@ -117,10 +118,10 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // at both ends can still hide an edge of its hard shadows (the sun's penumbra class holds
     // the shadows inside its beam).
     if (interval.b - interval.a >= 3 && c.sameClasses(interval.a, interval.b, ShadowEdges::Sharp)) {
-      request((interval.a + interval.b) / 2, out);
-      midpoints_.push_back(interval);
+      request((interval.a + interval.b) / 2, d);
+      d.midpoints.push_back(interval);
     } else {
-      requestInterior(interval, out);
+      requestInterior(interval, d);
     }
   } else if (interval.b - interval.a >= 3) {
     // Gentle curvature through the neighbouring intervals' ends on both sides (same face, same
@@ -130,38 +131,37 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c,
     // sun's), which can hide a sliver of light between the ends.
     const Curvature around = curvature(interval, c);
     if (!c.inPenumbra(interval.a, ShadowEdges::Sharp) && around.sides == 2 && around.gentle) {
-      interpolated_.push_back(interval);
+      d.interpolated.push_back(interval);
       return;
     }
-    request((interval.a + interval.b) / 2, out);  // (c)
-    midpoints_.push_back(interval);
+    request((interval.a + interval.b) / 2, d);  // (c)
+    d.midpoints.push_back(interval);
   } else if (c.inPenumbra(interval.a)) {
     // A single inner sample in a penumbra: checking it costs as much as computing it.
-    requestInterior(interval, out);
+    requestInterior(interval, d);
   } else {
-    halves_.push_back(interval);  // a single inner sample, lit or in umbra: (e) decides
+    d.halves.push_back(interval);  // a single inner sample, lit or in umbra: (e) decides
   }
 }
 
-void IntervalPlan::decideMidpoint(const Interval& interval, const Context& c,
-                                  std::vector<std::size_t>& out) {
+void IntervalPlan::decideMidpoint(const Interval& interval, const Context& c, Decisions& d) const {
   const std::size_t m = (interval.a + interval.b) / 2;
   const double t = static_cast<double>(m - interval.a) / (interval.b - interval.a);
   if (!c.sameClasses(interval.a, m) || !c.sameClasses(m, interval.b) ||
       !c.onLine(interval.a, m, interval.b, t, kMidpointMiss)) {
     // Each half is an interval of its own, its ends known: (b), (c) and (e) again, so that a
     // long interval costs no more than two short ones where the light bends.
-    ends_.push_back(Interval{interval.a, m});
-    ends_.push_back(Interval{m, interval.b});
+    d.ends.push_back(Interval{interval.a, m});
+    d.ends.push_back(Interval{m, interval.b});
     return;
   }
   for (const Interval half : {Interval{interval.a, m}, Interval{m, interval.b}}) {
     if (half.b - half.a < 2) continue;  // no sample between
     if (c.inPenumbra(half.a) && half.b - half.a >= 3) {
-      request((half.a + half.b) / 2, out);  // (d)
-      midpoints_.push_back(half);
+      request((half.a + half.b) / 2, d);  // (d)
+      d.midpoints.push_back(half);
     } else {
-      halves_.push_back(half);
+      d.halves.push_back(half);
     }
   }
 }
@@ -188,19 +188,18 @@ IntervalPlan::Curvature IntervalPlan::curvature(const Interval& interval, const 
   return result;
 }
 
-void IntervalPlan::decideHalf(const Interval& half, const Context& c,
-                              std::vector<std::size_t>& out) {
+void IntervalPlan::decideHalf(const Interval& half, const Context& c, Decisions& d) const {
   // (e). In a penumbra, on both sides: a penumbra is an S (the share of a disk or a polygon
   // seen past an edge) whose second differences vanish at its inflection, where a midpoint lies
   // on the line between the ends, so the side towards the penumbra's edge must be seen too.
   const Curvature around = curvature(half, c);
   const bool inPenumbra = c.inPenumbra(half.a) || c.inPenumbra(half.b);
   if (around.gentle && (!inPenumbra || around.sides == 2)) {
-    interpolated_.push_back(half);
+    d.interpolated.push_back(half);
   } else if (half.b - half.a >= 3) {
-    ends_.push_back(half);  // (c) again, as an interval of its own
+    d.ends.push_back(half);  // (c) again, as an interval of its own
   } else {
-    requestInterior(half, out);
+    requestInterior(half, d);
   }
 }
 
@@ -212,19 +211,39 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
   const Context c{classes, edges, checked};
   std::vector<std::size_t> out;
   // The halves of the last call first: every sample it asked for is known now, so (e) sees the
-  // most neighbours. Then the midpoints it asked for, then the ends of the first pass.
+  // most neighbours. Then the midpoints it asked for, then the ends of the first pass. Each
+  // interval's decision reads only what is known (known_ == 1) and asks only for samples inside
+  // it, and the intervals do not overlap, so they are decided in parallel and the plan does not
+  // depend on their order.
   while (out.empty() && !(halves_.empty() && midpoints_.empty() && ends_.empty())) {
     std::vector<Interval> halves = std::move(halves_), midpoints = std::move(midpoints_),
                           ends = std::move(ends_);
     halves_.clear();
     midpoints_.clear();
     ends_.clear();
-    for (const Interval& half : halves) decideHalf(half, c, out);
-    for (const Interval& interval : midpoints) decideMidpoint(interval, c, out);
-    for (const Interval& interval : ends) decideEnds(interval, c, out);
+    tbb::enumerable_thread_specific<Decisions> decided;
+    const auto decideAll = [&](const std::vector<Interval>& list, auto decide) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kIntervalsPerTask),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          Decisions& d = decided.local();
+                          for (std::size_t j = range.begin(); j != range.end(); ++j)
+                            (this->*decide)(list[j], c, d);
+                        });
+    };
+    decideAll(halves, &IntervalPlan::decideHalf);
+    decideAll(midpoints, &IntervalPlan::decideMidpoint);
+    decideAll(ends, &IntervalPlan::decideEnds);
+    for (Decisions& d : decided) {
+      out.insert(out.end(), d.out.begin(), d.out.end());
+      ends_.insert(ends_.end(), d.ends.begin(), d.ends.end());
+      midpoints_.insert(midpoints_.end(), d.midpoints.begin(), d.midpoints.end());
+      halves_.insert(halves_.end(), d.halves.begin(), d.halves.end());
+      interpolated_.insert(interpolated_.end(), d.interpolated.begin(), d.interpolated.end());
+    }
     // Halves found now wait for the next call unless nothing else is asked for: then they are
     // decided at once, with what is known.
   }
+  for (std::size_t i : out) known_[i] = 2;  // requested: known once its round is computed
   std::sort(out.begin(), out.end());
   requested_ = out;
   return out;

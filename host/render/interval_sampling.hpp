@@ -93,12 +93,18 @@ class IntervalPlan {
     std::size_t a, b;  // exact ends; a < b, same row
   };
   struct Context;  // what one call of next() reads
+  // What deciding some intervals gives: samples to compute, and intervals for each list.
+  struct Decisions {
+    std::vector<std::size_t> out;
+    std::vector<Interval> ends, midpoints, halves, interpolated;
+  };
+  static constexpr std::size_t kIntervalsPerTask = 8192;
 
-  void requestInterior(const Interval& interval, std::vector<std::size_t>& out);
-  void request(std::size_t sample, std::vector<std::size_t>& out);
-  void decideEnds(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
-  void decideMidpoint(const Interval& interval, const Context& c, std::vector<std::size_t>& out);
-  void decideHalf(const Interval& half, const Context& c, std::vector<std::size_t>& out);
+  void requestInterior(const Interval& interval, Decisions& d) const;
+  void request(std::size_t sample, Decisions& d) const;
+  void decideEnds(const Interval& interval, const Context& c, Decisions& d) const;
+  void decideMidpoint(const Interval& interval, const Context& c, Decisions& d) const;
+  void decideHalf(const Interval& half, const Context& c, Decisions& d) const;
   // (e): how many of the two neighbours one length beyond the ends could be used, and whether
   // the second differences through them are gentle.
   struct Curvature {
