@@ -39,21 +39,21 @@ struct IndirectField::State {
   };
 
   struct FieldNode {
-    SamplePoint at;                                      // where it is gathered
-    Eigen::Vector3d indirect = Eigen::Vector3d::Zero();  // lx per channel
+    SamplePoint at;  // where it is gathered
     bool gathered = false;
   };
 
   enum class TriangleState : uint8_t { Open, Kept, Cut, Exact };
 
-  // What the descent and the interpolation read first lies in the first cache line (the
+  // What the descent reads (the barycentric map from the first corner, the state, the
+  // children) lies in the first cache line, the nodes the interpolation reads in the second (the
   // triangles are a few pixels across at 1280 × 720, so a render descends every few pixels).
   struct alignas(64) FieldTriangle {
     Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
-    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
-    int children = -1;           // the first of four consecutive triangles once cut
+    int children = -1;  // the first of four consecutive triangles once cut
     TriangleState state = TriangleState::Open;
-    std::array<int, 6> node{};  // corners a, b, c, then the midpoints of ab, bc, ca
+    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
+    std::array<int, 6> node{};   // corners a, b, c, then the midpoints of ab, bc, ca
     int face = -1;
     int depth = 0;
     // A fan triangle's: the edges of its face's elements' boundary (FieldFace::boundary) that
@@ -107,6 +107,9 @@ struct IndirectField::State {
   std::map<std::pair<int, int>, int> faceIndex;  // (solid, face) → faces
   std::vector<FieldTriangle> triangles;
   std::vector<FieldNode> nodes;
+  // Each node's interreflected light, lx per channel (zero until gathered), apart from the
+  // nodes: the interpolation at every pixel reads 24 bytes of a node instead of the whole node.
+  std::vector<Eigen::Vector3d> nodeLight;
   std::unordered_map<NodeKey, int, NodeKeyHash> nodeAt;
   IndirectFieldStats stats;
   // A point's solid and the bits of its coordinates.
@@ -194,6 +197,7 @@ struct IndirectField::State {
       n.at.normal = f.normal;
       n.at.solid = f.solid;
       nodes.push_back(n);
+      nodeLight.push_back(Eigen::Vector3d::Zero());
     }
     return it->second;
   }
@@ -383,8 +387,7 @@ struct IndirectField::State {
     for (int n : wanted) points.push_back(nodes[n].at);
     const std::vector<Eigen::Vector3d> indirect = gather(points);
     for (std::size_t k = 0; k < wanted.size(); ++k) {
-      FieldNode& n = nodes[wanted[k]];
-      n.indirect = indirect[k];
+      nodeLight[wanted[k]] = indirect[k];
     }
     stats.nodes += wanted.size();
   }
@@ -397,11 +400,11 @@ struct IndirectField::State {
     // whatever direct shadow crosses the triangle.
     double worst = 0.0;
     for (int side = 0; side < 3; ++side) {
-      const FieldNode& m = nodes[tri.node[3 + side]];
+      const Eigen::Vector3d& m = nodeLight[tri.node[3 + side]];
       const Eigen::Vector3d line =
-          0.5 * (nodes[tri.node[side]].indirect + nodes[tri.node[(side + 1) % 3]].indirect);
-      const double miss = (m.indirect - line).cwiseAbs().maxCoeff();
-      if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m.indirect), 1e-300));
+          0.5 * (nodeLight[tri.node[side]] + nodeLight[tri.node[(side + 1) % 3]]);
+      const double miss = (m - line).cwiseAbs().maxCoeff();
+      if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m), 1e-300));
     }
     if (worst <= options.tolerance && tri.depth >= options.minDepth) {
       tri.state = TriangleState::Kept;
@@ -485,7 +488,7 @@ struct IndirectField::State {
     const FieldTriangle& tri = triangles[t];
     const std::array<double, 6> w = quadraticWeights(tri.barycentric(x));
     Eigen::Vector3d e = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 6; ++k) e += w[k] * nodes[tri.node[k]].indirect;
+    for (int k = 0; k < 6; ++k) e += w[k] * nodeLight[tri.node[k]];
     for (int c = 0; c < 3; ++c) channels[c] = static_cast<float>(e[c]);
   }
 
