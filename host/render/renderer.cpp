@@ -238,33 +238,38 @@ struct Renderer::State {
   void addIndirect(const Camera& camera, SampleLayer& layer,
                    const std::vector<std::size_t>& surface, bool exact,
                    const std::function<void(std::size_t)>& done) {
-    std::vector<SamplePoint> points;
-    std::vector<FacePoint> onFaces;
+    std::vector<SamplePoint> points;  // gathered exactly
+    std::vector<FacePoint> onFaces;   // from the field
+    std::vector<int> solids;
     std::vector<float> channels;  // lx per channel, 3 per sample of the batch
     for (std::size_t start = 0; start < surface.size(); start += kBatch) {
-      const std::size_t end = std::min(surface.size(), start + kBatch);
-      points.resize(end - start);
-      forEachSample(end - start, [&](std::size_t j) {
-        points[j] = surfacePoint(camera, layer.visibility, surface[start + j]);
-      });
-      channels.assign(points.size() * 3, 0.0f);
+      const std::size_t end = std::min(surface.size(), start + kBatch), count = end - start;
+      channels.assign(count * 3, 0.0f);
+      solids.resize(count);
       if (exact) {
+        points.resize(count);
+        forEachSample(count, [&](std::size_t j) {
+          points[j] = surfacePoint(camera, layer.visibility, surface[start + j]);
+          solids[j] = points[j].solid;
+        });
         const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
-        for (std::size_t j = 0; j < points.size(); ++j)
+        for (std::size_t j = 0; j < count; ++j)
           for (int c = 0; c < 3; ++c) channels[j * 3 + c] = static_cast<float>(e[j][c]);
       } else {
-        onFaces.resize(points.size());
-        forEachSample(points.size(), [&](std::size_t j) {
-          const VisibleFace& face =
-              visibility.visible().face(layer.visibility.faceIds[surface[start + j]]);
-          onFaces[j] = FacePoint{points[j].position, face.index, face.face};
+        onFaces.resize(count);
+        forEachSample(count, [&](std::size_t j) {
+          const std::size_t i = surface[start + j];
+          const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
+          onFaces[j] =
+              FacePoint{surfacePoint(camera, layer.visibility, i).position, face.index, face.face};
+          solids[j] = face.index;
         });
         field->evaluate(onFaces, channels);
       }
-      forEachSample(points.size(), [&](std::size_t j) {
+      forEachSample(count, [&](std::size_t j) {
         const std::size_t i = surface[start + j];
         const Vec3 e(channels[j * 3], channels[j * 3 + 1], channels[j * 3 + 2]);
-        const Vec3 l = solidReflectance[points[j].solid].cwiseProduct(e) / std::numbers::pi;
+        const Vec3 l = solidReflectance[solids[j]].cwiseProduct(e) / std::numbers::pi;
         layer.illuminance[i] += static_cast<float>(photometric(e));
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
       });
