@@ -64,8 +64,8 @@ PlannedRow planRow(const SunPatchEdge& row, int width, int k, ShadowEdges shadow
 
 // A penumbra is an S: its second differences vanish at its inflection, and a midpoint there
 // lies on the line between the ends. With (e) on one side alone (the side away from the patch),
-// an interval from the penumbra's lit edge to the inflection was interpolated: 2.1 % off at a
-// pixel of data/office-sun.yaml from the door at 1280 × 720, 3.2 % here. Every position of the
+// an interval from the penumbra's lit edge to the inflection passes: 2.1 % off at a pixel of
+// data/office-sun.yaml from the door at 1280 × 720, 3.2 % here. Every position of the
 // edge against the k = 8 grid, an eighth of a sample apart; the sun's edges (sharp) and a narrow
 // soft penumbra of an area source, which has the same S.
 TEST(IntervalPlan, APenumbraStaysWithinTheBoundsWhereverItsEdgeFalls) {
