@@ -189,12 +189,14 @@ IntervalPlan::Curvature IntervalPlan::curvature(const Interval& interval, const 
 }
 
 void IntervalPlan::decideHalf(const Interval& half, const Context& c, Decisions& d) const {
-  // (e). In a penumbra, on both sides: a penumbra is an S (the share of a disk or a polygon
-  // seen past an edge) whose second differences vanish at its inflection, where a midpoint lies
-  // on the line between the ends, so the side towards the penumbra's edge must be seen too.
+  // (e), on evidence: the second differences on one side at least, where neither end has
+  // another face or class beyond it; on both sides in a penumbra, an S (the share of a disk or a
+  // polygon seen past an edge) whose second differences vanish at its inflection, where a
+  // midpoint lies on the line between the ends, so that the side towards the penumbra's edge is
+  // seen too.
   const Curvature around = curvature(half, c);
   const bool inPenumbra = c.inPenumbra(half.a) || c.inPenumbra(half.b);
-  if (around.gentle && (!inPenumbra || around.sides == 2)) {
+  if (around.gentle && around.sides >= (inPenumbra ? 2 : 1)) {
     d.interpolated.push_back(half);
   } else if (half.b - half.a >= 3) {
     d.ends.push_back(half);  // (c) again, as an interval of its own

@@ -24,10 +24,11 @@
 //       gets its own midpoint, and (c) again;
 //   (e) neighbour second differences: a half is interpolated only if the second differences
 //       through its ends and the exact samples one half-length beyond them (same face, same
-//       classes) predict an interpolation error of at most kInterpolationError, on both sides
-//       where a source is in penumbra at an end (a penumbra is an S, whose second differences
-//       vanish at its inflection); otherwise a half of 3 or more steps is decided as an interval
-//       of its own ((b), (c)), one of 2 computed.
+//       classes) predict an interpolation error of at most kInterpolationError, on one side at
+//       least (with no side usable there is no evidence), on both where a source is in
+//       penumbra at an end (a penumbra is an S, whose second differences vanish at its
+//       inflection); otherwise a half of 3 or more steps is decided as an interval of its own
+//       ((b), (c)), one of 2 computed.
 // The bound behind (c) and (e): for a quadratic the line between the ends misses the midpoint by
 // h²|E''|/8 over a length h, so a half misses by a quarter of what the whole missed at its
 // midpoint; kMidpointMiss = 4 · kInterpolationError, and (e) estimates the same h²|E''|/8 from
