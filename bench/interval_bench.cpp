@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/median.hpp"
 #include "cl/device.hpp"
 #include "memory/heap_settings.hpp"
 #include "render/renderer.hpp"
@@ -68,12 +69,6 @@ void keepBest(Timed& best, Timed&& t) {
     best.seconds = t.seconds;
     best.view = std::move(t.view);
   }
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 }  // namespace
@@ -156,8 +151,8 @@ int main(int argc, char** argv) {
         "{:>8.3f} {:>8.3f} {:>8.2f} {:>8.2f} {:>9.3f} {:>11.3f} {:>11} {:>8.3f} {:>9}\n",
         view.name, p99, 100 * worst / p99, 100 * worstRelative,
         100 * sampled.view.stats.exactShare(), first.seconds, exact.seconds, sampled.seconds,
-        exact.seconds / sampled.seconds, median(pairRatio), exact.cpuSeconds, sampled.cpuSeconds,
-        exact.cpuSeconds / sampled.cpuSeconds, median(pairCpuRatio),
+        exact.seconds / sampled.seconds, bench::median(pairRatio), exact.cpuSeconds,
+        sampled.cpuSeconds, exact.cpuSeconds / sampled.cpuSeconds, bench::median(pairCpuRatio),
         exact.view.stats.illuminanceSeconds, sampled.view.stats.indirectSeconds,
         field ? field->nodes : 0, field ? field->seconds : 0.0, sampled.view.stats.gatheredSamples);
     for (const auto& [interval, timed] : {std::pair{1, &exact}, std::pair{k, &sampled}}) {

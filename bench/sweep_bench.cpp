@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/median.hpp"
 #include "study/study_cases.hpp"
 #include "study/study_reader.hpp"
 
@@ -75,10 +76,7 @@ double timed(const std::function<void()>& work) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
+using penumbra::bench::median;
 
 // `penumbra grid` on one case: the same scene, values and grids as the sweep computes.
 std::string gridCommand(const Options& options, const Study& study, const StudyCase& c,

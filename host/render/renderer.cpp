@@ -240,17 +240,14 @@ struct Renderer::State {
                    const std::function<void(std::size_t)>& done) {
     std::vector<SamplePoint> points;  // gathered exactly
     std::vector<FacePoint> onFaces;   // from the field
-    std::vector<int> solids;
-    std::vector<float> channels;  // lx per channel, 3 per sample of the batch
+    std::vector<float> channels;      // lx per channel, 3 per sample of the batch
     for (std::size_t start = 0; start < surface.size(); start += kBatch) {
       const std::size_t end = std::min(surface.size(), start + kBatch), count = end - start;
       channels.assign(count * 3, 0.0f);
-      solids.resize(count);
       if (exact) {
         points.resize(count);
         forEachSample(count, [&](std::size_t j) {
           points[j] = surfacePoint(camera, layer.visibility, surface[start + j]);
-          solids[j] = points[j].solid;
         });
         const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
         for (std::size_t j = 0; j < count; ++j)
@@ -262,14 +259,14 @@ struct Renderer::State {
           const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
           onFaces[j] =
               FacePoint{surfacePoint(camera, layer.visibility, i).position, face.index, face.face};
-          solids[j] = face.index;
         });
         field->evaluate(onFaces, channels);
       }
       forEachSample(count, [&](std::size_t j) {
         const std::size_t i = surface[start + j];
         const Vec3 e(channels[j * 3], channels[j * 3 + 1], channels[j * 3 + 2]);
-        const Vec3 l = solidReflectance[solids[j]].cwiseProduct(e) / std::numbers::pi;
+        const int solid = visibility.visible().face(layer.visibility.faceIds[i]).index;
+        const Vec3 l = solidReflectance[solid].cwiseProduct(e) / std::numbers::pi;
         layer.illuminance[i] += static_cast<float>(photometric(e));
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
       });
