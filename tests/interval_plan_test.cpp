@@ -62,7 +62,6 @@ Planned plan(const Scene& scene, int width, int height, const std::vector<uint32
   for (std::vector<std::size_t> round = plan.next(classes, edges, checked); !round.empty();
        round = plan.next(classes, edges, checked))
     compute(round);
-  plan.interpolate(checked);
   return planned;
 }
 

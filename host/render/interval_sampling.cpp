@@ -214,9 +214,9 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
   std::vector<std::size_t> out;
   // The halves of the last call first: every sample it asked for is known now, so (e) sees the
   // most neighbours. Then the midpoints it asked for, then the ends of the first pass. Each
-  // interval's decision reads only what is known (known_ == 1) and asks only for samples inside
-  // it, and the intervals do not overlap, so they are decided in parallel and the plan does not
-  // depend on their order.
+  // interval's decision reads only what is known (known_ == 1), asks only for samples inside it
+  // and fills only its inside when it is interpolated, and the intervals do not overlap, so they
+  // are decided in parallel and neither the plan nor the values depend on their order.
   while (out.empty() && !(halves_.empty() && midpoints_.empty() && ends_.empty())) {
     std::vector<Interval> halves = std::move(halves_), midpoints = std::move(midpoints_),
                           ends = std::move(ends_);
@@ -228,8 +228,12 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kIntervalsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           Decisions& d = decided.local();
+                          const std::size_t from = d.interpolated.size();
                           for (std::size_t j = range.begin(); j != range.end(); ++j)
                             (this->*decide)(list[j], c, d);
+                          // Filled while their ends are in this thread's cache.
+                          for (std::size_t j = from; j < d.interpolated.size(); ++j)
+                            fill(d.interpolated[j], checked);
                         });
     };
     decideAll(halves, &IntervalPlan::decideHalf);
@@ -240,7 +244,6 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
       ends_.insert(ends_.end(), d.ends.begin(), d.ends.end());
       midpoints_.insert(midpoints_.end(), d.midpoints.begin(), d.midpoints.end());
       halves_.insert(halves_.end(), d.halves.begin(), d.halves.end());
-      interpolated_.insert(interpolated_.end(), d.interpolated.begin(), d.interpolated.end());
     }
     // Halves found now wait for the next call unless nothing else is asked for: then they are
     // decided at once, with what is known.
@@ -251,20 +254,19 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
   return out;
 }
 
-void IntervalPlan::interpolate(std::span<const SampleValues> sets) const {
+void IntervalPlan::fill(const Interval& interval, std::span<const SampleValues> sets) {
   // In float, stepping from the start: a few roundings of the values, far below the 0.1 % the
   // plan allows an interpolated value.
-  for (const Interval& interval : interpolated_) {
-    const float length = static_cast<float>(interval.b - interval.a);
-    for (const SampleValues& set : sets) {
-      const int channels = set.channels;
-      float* const a = &set.values[interval.a * channels];
-      const float* const b = &set.values[interval.b * channels];
-      for (int c = 0; c < channels; ++c) {
-        const float step = (b[c] - a[c]) / length;
-        for (std::size_t i = 1; i < interval.b - interval.a; ++i)
-          a[i * channels + c] = a[c] + static_cast<float>(i) * step;
-      }
+  const std::size_t steps = interval.b - interval.a;
+  const float length = static_cast<float>(steps);
+  for (const SampleValues& set : sets) {
+    const int channels = set.channels;
+    float* const a = &set.values[interval.a * channels];
+    const float* const b = &set.values[interval.b * channels];
+    for (int c = 0; c < channels; ++c) {
+      const float step = (b[c] - a[c]) / length;
+      for (std::size_t i = 1; i < steps; ++i)
+        a[i * channels + c] = a[c] + static_cast<float>(i) * step;
     }
   }
 }

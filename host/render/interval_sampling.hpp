@@ -80,14 +80,12 @@ class IntervalPlan {
   const std::vector<std::size_t>& firstPass() const { return first_; }
   // The next samples to compute, given the shadow classes (`classes[sample * columns + c]`)
   // and the checked values at every sample computed so far; empty once every interval is
-  // decided.
-  // `edges` has one entry per class column.
+  // decided. Each interval it decides to interpolate is filled at once, in every set of
+  // `checked`, from its exact ends: once next() returns empty, every sample that needs E holds
+  // its value. `edges` has one entry per class column.
   std::vector<std::size_t> next(std::span<const ShadowClass> classes,
                                 std::span<const ShadowEdges> edges,
                                 std::span<const SampleValues> checked);
-  // Fills every interpolated sample between its interval's ends, in each set of values (exact
-  // samples already filled).
-  void interpolate(std::span<const SampleValues> sets) const;
 
  private:
   struct Interval {
@@ -96,11 +94,13 @@ class IntervalPlan {
   struct Context;  // what one call of next() reads
   // What deciding some intervals gives: samples to compute, and intervals for each list.
   struct Decisions {
-    std::vector<std::size_t> out;
+    std::vector<std::size_t> out;  // samples to compute
     std::vector<Interval> ends, midpoints, halves, interpolated;
   };
   static constexpr std::size_t kIntervalsPerTask = 8192;
 
+  // Sets the samples inside `interval` on the straight line between its ends.
+  static void fill(const Interval& interval, std::span<const SampleValues> sets);
   void requestInterior(const Interval& interval, Decisions& d) const;
   void request(std::size_t sample, Decisions& d) const;
   void decideEnds(const Interval& interval, const Context& c, Decisions& d) const;
@@ -122,7 +122,6 @@ class IntervalPlan {
   std::vector<Interval> ends_;          // one face throughout, ends computed (also failed halves)
   std::vector<Interval> midpoints_;     // midpoint requested
   std::vector<Interval> halves_;        // passed (c) or (d), waiting for (e)
-  std::vector<Interval> interpolated_;  // decided
 };
 
 }  // namespace penumbra

@@ -327,14 +327,14 @@ struct Renderer::State {
     const std::vector<std::size_t>& first = plan.firstPass();
     evaluate(camera, layer, first, classes, advance);
     stats.exactSamples += first.size();
-    // The plan checks what the image shows (RGB luminance) and the E AOV.
+    // The plan checks what the image shows (RGB luminance) and the E AOV, and fills both where
+    // it interpolates.
     const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
     for (std::vector<std::size_t> round = plan.next(classes, shadowEdges, checked); !round.empty();
          round = plan.next(classes, shadowEdges, checked)) {
       evaluate(camera, layer, round, classes, advance);
       stats.exactSamples += round.size();
     }
-    plan.interpolate(checked);
     stats.illuminanceSeconds += secondsSince(start);
     if (interreflection) {
       start = Clock::now();
