@@ -45,13 +45,20 @@ struct IndirectField::State {
 
   enum class TriangleState : uint8_t { Open, Kept, Cut, Exact };
 
-  // What the descent reads (the barycentric map from the first corner, the state, the
-  // children) lies in the first cache line, the nodes the interpolation reads in the second (the
-  // triangles are a few pixels across at 1280 × 720, so a render descends every few pixels).
-  struct alignas(64) FieldTriangle {
-    Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
+  // Where a triangle stands in its fan triangle's tree. The tree lies in an array of its own
+  // (8 bytes a triangle, a megabyte or two for a room) because the descent reads nothing else of
+  // the levels it passes: the triangles are a few pixels across at 1280 × 720, so a render
+  // descends every few pixels, and a level's whole triangle (a few cache lines, tens of MB in
+  // all) missed the cache at every step.
+  struct TreeLink {
     int children = -1;  // the first of four consecutive triangles once cut
     TriangleState state = TriangleState::Open;
+  };
+
+  // What a point's barycentric coordinates need (the map from the first corner, the corner)
+  // lies in the first cache line, the nodes the interpolation reads in the second.
+  struct alignas(64) FieldTriangle {
+    Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
     std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
     std::array<int, 6> node{};   // corners a, b, c, then the midpoints of ab, bc, ca
     int face = -1;
@@ -98,6 +105,17 @@ struct IndirectField::State {
     return 3;
   }
 
+  // Barycentric λ in quarter q (quarterAt) of the triangle where it is l: the corner quarter k
+  // (corners: k, and the midpoints of k's sides) has 2l − 1 at k and 2l elsewhere; the middle one
+  // (the midpoints of ab, bc, ca) has 1 − 2l_c, 1 − 2l_a, 1 − 2l_b. Exact but for the rounding of
+  // 1 − 2l, far below the descent's need (kInsideLeaf).
+  static Eigen::Vector3d inQuarter(const Eigen::Vector3d& l, int q) {
+    if (q == 3) return Eigen::Vector3d(1 - 2 * l[2], 1 - 2 * l[0], 1 - 2 * l[1]);
+    Eigen::Vector3d child = 2 * l;
+    child[q] -= 1;
+    return child;
+  }
+
   const SurfaceMesh* mesh;
   FieldGather gather;
   FieldOptions options;
@@ -106,6 +124,7 @@ struct IndirectField::State {
   std::vector<FieldFace> faces;
   std::map<std::pair<int, int>, int> faceIndex;  // (solid, face) → faces
   std::vector<FieldTriangle> triangles;
+  std::vector<TreeLink> tree;  // one per triangle
   std::vector<FieldNode> nodes;
   // Each node's interreflected light, lx per channel (zero until gathered), apart from the
   // nodes: the interpolation at every pixel reads 24 bytes of a node instead of the whole node.
@@ -220,6 +239,7 @@ struct IndirectField::State {
     // Nodes are made once the triangles exist: node() probes the face's triangles.
     for (int k = 0; k < 6; ++k) t.node[k] = -1;
     triangles.push_back(t);
+    tree.emplace_back();
     pendingNodes.push_back({static_cast<int>(triangles.size()) - 1, at});
     return static_cast<int>(triangles.size()) - 1;
   }
@@ -407,11 +427,11 @@ struct IndirectField::State {
       if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m), 1e-300));
     }
     if (worst <= options.tolerance && tri.depth >= options.minDepth) {
-      tri.state = TriangleState::Kept;
+      tree[t].state = TriangleState::Kept;
       return;
     }
     if (tri.depth >= options.maxDepth) {
-      tri.state = TriangleState::Exact;
+      tree[t].state = TriangleState::Exact;
       return;
     }
     const std::array<Vec2, 3> c = tri.corner;
@@ -422,14 +442,19 @@ struct IndirectField::State {
     addTriangle(face, {ca, bc, c[2]}, depth);
     addTriangle(face, {ab, bc, ca}, depth);
     placePendingNodes();
-    triangles[t].children = first;
-    triangles[t].state = TriangleState::Cut;
+    tree[t].children = first;
+    tree[t].state = TriangleState::Cut;
   }
 
   // The kept or open triangle below `t` that holds x.
   int descend(int t, const Vec2& x) const {
-    while (triangles[t].state == TriangleState::Cut)
-      t = triangles[t].children + quarterAt(triangles[t].barycentric(x));
+    if (tree[t].state != TriangleState::Cut) return t;
+    Eigen::Vector3d l = triangles[t].barycentric(x);
+    while (tree[t].state == TriangleState::Cut) {
+      const int q = quarterAt(l);
+      l = inQuarter(l, q);
+      t = tree[t].children + q;
+    }
     return t;
   }
 
@@ -508,10 +533,10 @@ struct IndirectField::State {
       for (std::size_t i = range.begin(); i < range.end(); ++i) {
         leaf[i] = locate(points[i], local[i], cursor);
         if (leaf[i] < 0) continue;
-        if (triangles[leaf[i]].state == TriangleState::Kept) {
+        if (tree[leaf[i]].state == TriangleState::Kept) {
           interpolate(leaf[i], local[i], &channels[i * 3]);
           leaf[i] = kDone;
-        } else if (triangles[leaf[i]].state == TriangleState::Exact) {
+        } else if (tree[leaf[i]].state == TriangleState::Exact) {
           leaf[i] = kGatherExactly;
         } else {
           waiting.push_back(i);
@@ -528,7 +553,7 @@ struct IndirectField::State {
       std::vector<int> open;
       for (std::size_t i : waiting) {
         leaf[i] = descend(leaf[i], local[i]);
-        if (triangles[leaf[i]].state == TriangleState::Open) open.push_back(leaf[i]);
+        if (tree[leaf[i]].state == TriangleState::Open) open.push_back(leaf[i]);
       }
       std::sort(open.begin(), open.end());
       open.erase(std::unique(open.begin(), open.end()), open.end());
@@ -537,7 +562,7 @@ struct IndirectField::State {
       for (int t : open) decide(t);
     }
     for (std::size_t i : waiting) {
-      if (triangles[leaf[i]].state == TriangleState::Exact) {
+      if (tree[leaf[i]].state == TriangleState::Exact) {
         leaf[i] = kGatherExactly;
         continue;
       }
