@@ -40,11 +40,15 @@ judge() {
     done
     ops="mantiuk08 reinhard02 drago03 durand02 fattal02"
   fi
-  # Halos on what the display emits: every PNG is shown through a gamma-2.2 display.
+  # Halos on what the display emits: ours through the display model they are encoded for
+  # (sRGB, black 0.02 of white), the others' through a gamma-2.2 display.
   for method in clip linear constraint $ops; do
     printf '%-28s %-11s ' "$name" "$method"
+    decode="--decode-gamma 2.2"
+    case $method in clip | linear | constraint) decode=--decode-display ;; esac
     if [ -s "$maps/$method.png" ]; then
-      "$tool" "$exr" "$faces" "$maps/$method.png" --decode-gamma 2.2
+      # shellcheck disable=SC2086 # the option and its value are two words
+      "$tool" "$exr" "$faces" "$maps/$method.png" $decode
     else
       echo "no image (the operator failed on this input)"
     fi
