@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "geometry/tolerance.hpp"
+#include "radiosity/field_triangle.hpp"
 #include "radiosity/radiosity_solver.hpp"
 #include "timing/seconds_since.hpp"
 
@@ -43,36 +44,8 @@ struct IndirectField::State {
     bool gathered = false;
   };
 
-  enum class TriangleState : uint8_t { Open, Kept, Cut, Exact };
-
-  // Where a triangle stands in its fan triangle's tree. The tree lies in an array of its own
-  // (8 bytes a triangle, a megabyte or two for a room) because the descent reads nothing else of
-  // the levels it passes: the triangles are a few pixels across at 1280 × 720, so a render
-  // descends every few pixels, and a level's whole triangle (a few cache lines, tens of MB in
-  // all) missed the cache at every step.
-  struct TreeLink {
-    int children = -1;  // the first of four consecutive triangles once cut
-    TriangleState state = TriangleState::Open;
-  };
-
-  // What a point's barycentric coordinates need (the map from the first corner, the corner)
-  // lies in the first cache line, the nodes the interpolation reads in the second.
-  struct alignas(64) FieldTriangle {
-    Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
-    std::array<Vec2, 3> corner;  // in the face's frame, counter-clockwise
-    std::array<int, 6> node{};   // corners a, b, c, then the midpoints of ab, bc, ca
-    int face = -1;
-    int depth = 0;
-    // A fan triangle's: the edges of its face's elements' boundary (FieldFace::boundary) that
-    // come within FieldOptions::boundaryBand of it.
-    std::vector<int> nearBoundary;
-
-    // (λ_a, λ_b, λ_c) of a point in the face's frame.
-    Eigen::Vector3d barycentric(const Vec2& x) const {
-      const Vec2 l = toBarycentric * (x - corner[0]);
-      return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
-    }
-  };
+  using TriangleState = FieldTriangleState;
+  using TreeLink = FieldTreeLink;
 
   struct NodeKey {
     int face;
@@ -90,31 +63,6 @@ struct IndirectField::State {
   };
 
   static double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-  // The quadratic Lagrange weights of the six nodes at barycentric λ.
-  static std::array<double, 6> quadraticWeights(const Eigen::Vector3d& l) {
-    return {l[0] * (2 * l[0] - 1), l[1] * (2 * l[1] - 1), l[2] * (2 * l[2] - 1),
-            4 * l[0] * l[1],       4 * l[1] * l[2],       4 * l[2] * l[0]};
-  }
-
-  // The child of a triangle cut at its midpoints that holds barycentric λ: the corner quarters
-  // 0, 1, 2 where that corner's λ is at least ½, the middle one (3) otherwise.
-  static int quarterAt(const Eigen::Vector3d& l) {
-    for (int k = 0; k < 3; ++k)
-      if (l[k] >= 0.5) return k;
-    return 3;
-  }
-
-  // Barycentric λ in quarter q (quarterAt) of the triangle where it is l: the corner quarter k
-  // (corners: k, and the midpoints of k's sides) has 2l − 1 at k and 2l elsewhere; the middle one
-  // (the midpoints of ab, bc, ca) has 1 − 2l_c, 1 − 2l_a, 1 − 2l_b. Exact but for the rounding of
-  // 1 − 2l, far below the descent's need (kInsideLeaf).
-  static Eigen::Vector3d inQuarter(const Eigen::Vector3d& l, int q) {
-    if (q == 3) return Eigen::Vector3d(1 - 2 * l[2], 1 - 2 * l[0], 1 - 2 * l[1]);
-    Eigen::Vector3d child = 2 * l;
-    child[q] -= 1;
-    return child;
-  }
 
   const SurfaceMesh* mesh;
   FieldGather gather;
