@@ -131,7 +131,7 @@ void IntervalPlan::decideEnds(const Interval& interval, const Context& c, Decisi
     // sun's), which can hide a sliver of light between the ends.
     const Curvature around = curvature(interval, c);
     if (!c.inPenumbra(interval.a, ShadowEdges::Sharp) && around.sides == 2 && around.gentle) {
-      d.interpolated.push_back(interval);
+      fill(interval, c.checked);
       return;
     }
     request((interval.a + interval.b) / 2, d);  // (c)
@@ -197,7 +197,7 @@ void IntervalPlan::decideHalf(const Interval& half, const Context& c, Decisions&
   const Curvature around = curvature(half, c);
   const bool inPenumbra = c.inPenumbra(half.a) || c.inPenumbra(half.b);
   if (around.gentle && around.sides >= (inPenumbra ? 2 : 1)) {
-    d.interpolated.push_back(half);
+    fill(half, c.checked);
   } else if (half.b - half.a >= 3) {
     d.ends.push_back(half);  // (c) again, as an interval of its own
   } else {
@@ -228,12 +228,8 @@ std::vector<std::size_t> IntervalPlan::next(std::span<const ShadowClass> classes
       tbb::parallel_for(tbb::blocked_range<std::size_t>(0, list.size(), kIntervalsPerTask),
                         [&](const tbb::blocked_range<std::size_t>& range) {
                           Decisions& d = decided.local();
-                          const std::size_t from = d.interpolated.size();
                           for (std::size_t j = range.begin(); j != range.end(); ++j)
                             (this->*decide)(list[j], c, d);
-                          // Filled while their ends are in this thread's cache.
-                          for (std::size_t j = from; j < d.interpolated.size(); ++j)
-                            fill(d.interpolated[j], checked);
                         });
     };
     decideAll(halves, &IntervalPlan::decideHalf);

@@ -95,11 +95,12 @@ class IntervalPlan {
   // What deciding some intervals gives: samples to compute, and intervals for each list.
   struct Decisions {
     std::vector<std::size_t> out;  // samples to compute
-    std::vector<Interval> ends, midpoints, halves, interpolated;
+    std::vector<Interval> ends, midpoints, halves;
   };
   static constexpr std::size_t kIntervalsPerTask = 8192;
 
-  // Sets the samples inside `interval` on the straight line between its ends.
+  // Sets the samples inside `interval` on the straight line between its ends: a decision to
+  // interpolate fills at once, while the ends it has just read are in cache.
   static void fill(const Interval& interval, std::span<const SampleValues> sets);
   void requestInterior(const Interval& interval, Decisions& d) const;
   void request(std::size_t sample, Decisions& d) const;
