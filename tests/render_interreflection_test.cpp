@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "illuminance/estimator.hpp"
+#include "interval_bounds.hpp"
 #include "radiosity/indirect_field.hpp"
 #include "radiosity/radiosity_solver.hpp"
 #include "render/renderer.hpp"
@@ -101,6 +102,16 @@ TEST(RenderedTotal, APixelEqualsTheGridsTotalAtItsPoint) {
         "worst %.2e, mean %.2e\n",
         view.name.c_str(), view.width, view.height, a.worst, fromField.stats.gatheredSamples,
         b.pixels, b.worst, b.mean);
+    // Interval mode on the total: the field taken at the plan's exact samples and checked with
+    // the direct light, against the field at every pixel (interval_bounds.hpp).
+    const RenderedView sampled = renderer.render(view, RenderOptions{8, 1, {}});
+    const IntervalErrors e = intervalErrors(fromField, sampled);
+    std::printf("%s k = 8: exact share %.3f, worst %.4f %% of p99, %.4f %% per pixel\n",
+                view.name.c_str(), sampled.stats.exactShare(), 100 * e.worst / e.p99,
+                100 * e.worstRelative);
+    EXPECT_LE(e.worst, 0.005 * e.p99) << view.name;
+    EXPECT_LE(e.worstRelative, 0.01) << view.name;
+    EXPECT_LT(sampled.stats.exactShare(), 0.6) << view.name;
   }
 }
 

@@ -50,7 +50,8 @@ struct IntervalPlan::Context {
         const double vp = set.values[p * set.channels + c], vq = set.values[q * set.channels + c],
                      vr = set.values[r * set.channels + c];
         const double scale = std::max({std::abs(vp), std::abs(vq), std::abs(vr)});
-        if (std::abs(vp - 2 * vq + vr) / 8 > kInterpolationError * scale) return false;
+        const double predicted = std::abs(vp - 2 * vq + vr) / (set.kinks ? 2 : 8);
+        if (predicted > kInterpolationError * scale) return false;
       }
     return true;
   }

@@ -33,6 +33,8 @@
 // h²|E''|/8 over a length h, so a half misses by a quarter of what the whole missed at its
 // midpoint; kMidpointMiss = 4 · kInterpolationError, and (e) estimates the same h²|E''|/8 from
 // |second difference| / 8, at either end, so that curvature that changes along the row counts.
+// Values that may bend at a point (SampleValues::kinks: the interreflected light, from a field of
+// quadratic triangles) are asked four times as much: a kink halfway misses by |Δ²|/2.
 // Only samples that need illuminance take part (`needed`: samples that show a solid's face).
 #include <cstddef>
 #include <cstdint>
@@ -58,6 +60,11 @@ enum class ShadowEdges : uint8_t {
 struct SampleValues {
   std::span<float> values;
   int channels = 1;
+  // Whether the values may bend sharply at a point between samples, not only curve (the
+  // interreflected light from a field of quadratic triangles, whose slope changes across their
+  // edges): a kink halfway along an interval misses the line by 4 times what the second
+  // differences through its ends predict for a quadratic, so (e) asks 4 times as much of them.
+  bool kinks = false;
 };
 
 class IntervalPlan {

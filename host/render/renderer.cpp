@@ -155,7 +155,8 @@ struct Renderer::State {
   // luminaire (LuminaireEngine::Result::shadow: the point model Lit where the sample sees its
   // centre, Umbra where not; the area model its opening's class), then the sun's
   // (sunShadowClass), so that no shadow edge is interpolated across. The sky has none: its
-  // shadows are soft, and the plan's checks of the values decide there.
+  // shadows are soft, and the plan's checks of the values decide there. Nor has the
+  // interreflected light: its bends are the plan's values' (SampleValues::kinks).
   int classColumns() const { return static_cast<int>(shadowEdges.size()); }
 
   // What each class column's shadows are (IntervalPlan's rules (b) and (c)): the Lambertian
@@ -173,21 +174,40 @@ struct Renderer::State {
     return edges;
   }
 
-  // Exact illuminance and luminance at `indices` (in batches of kBatch), and each one's shadow
-  // class per source and luminaire into `classes` (sample × classColumns()) for the interval
-  // plan. A source that gives a sample nothing counts as umbra there, whatever the volumes said:
-  // several occluders together can hide a source that none hides alone.
-  void evaluate(const Camera& camera, SampleLayer& layer, const std::vector<std::size_t>& indices,
-                std::vector<ShadowClass>& classes, const std::function<void(std::size_t)>& done) {
+  // What one render's exact samples write and count: the layer's values, each sample's shadow
+  // class per class column (sample × classColumns()) for the interval plan, the render's stats.
+  struct SampleOutputs {
+    SampleLayer& layer;
+    std::vector<ShadowClass>& classes;
+    RenderStats& stats;
+    bool exactIndirect = false;  // gather the interreflected light at each sample, not the field
+  };
+
+  // Exact illuminance and luminance at `indices` (in batches of kBatch), the interreflected
+  // light included where the renderer computes it, so that the interval plan checks and
+  // interpolates the light the image shows; and each sample's shadow classes. A source that
+  // gives a sample nothing counts as umbra there, whatever the volumes said: several occluders
+  // together can hide a source that none hides alone.
+  void evaluate(const Camera& camera, const std::vector<std::size_t>& indices, SampleOutputs out,
+                const std::function<void(std::size_t)>& done) {
+    SampleLayer& layer = out.layer;
+    std::vector<ShadowClass>& classes = out.classes;
     const int sources = static_cast<int>(scene->sources.size());
     const int columns = classColumns();
     std::vector<SamplePoint> points;
+    std::vector<float> indirect;  // lx per channel, 3 per sample of the batch
     for (std::size_t start = 0; start < indices.size(); start += kBatch) {
       const std::size_t end = std::min(indices.size(), start + kBatch);
       points.resize(end - start);
       forEachSample(end - start, [&](std::size_t j) {
         points[j] = surfacePoint(camera, layer.visibility, indices[start + j]);
       });
+      if (interreflection) {
+        const auto begin = Clock::now();
+        indirectLight(layer, std::span(indices).subspan(start, end - start), points,
+                      out.exactIndirect, indirect);
+        out.stats.indirectSeconds += secondsSince(begin);
+      }
       const IlluminanceResult result = illuminance.evaluate(points, true);
       // The daylight on the host, exact in double past every solid: the sky and the ground
       // (outside the room, on an obstruction's faces, the whole sky in front of the point), the
@@ -226,6 +246,12 @@ struct Renderer::State {
           classes[i * columns + columns - 1] =
               sunShadowClass(sun[local], beam[local] != 0, full, transmittances);
         }
+        if (interreflection) {
+          const Vec3 reflected(indirect[local * 3], indirect[local * 3 + 1],
+                               indirect[local * 3 + 2]);
+          e += photometric(reflected);
+          light += reflected;
+        }
         const Vec3 l = rho.cwiseProduct(light) / std::numbers::pi;
         layer.illuminance[i] = static_cast<float>(e);
         for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] = static_cast<float>(l[c]);
@@ -234,45 +260,24 @@ struct Renderer::State {
     }
   }
 
-  // Adds the interreflected light to the layer's surface samples (its direct light complete):
-  // from the field, or gathered exactly at every sample, a batch at a time.
-  void addIndirect(const Camera& camera, SampleLayer& layer,
-                   const std::vector<std::size_t>& surface, bool exact,
-                   const std::function<void(std::size_t)>& done) {
-    std::vector<SamplePoint> points;  // gathered exactly
-    std::vector<FacePoint> onFaces;   // from the field
-    std::vector<float> channels;      // lx per channel, 3 per sample of the batch
-    for (std::size_t start = 0; start < surface.size(); start += kBatch) {
-      const std::size_t end = std::min(surface.size(), start + kBatch), count = end - start;
-      channels.assign(count * 3, 0.0f);
-      if (exact) {
-        points.resize(count);
-        forEachSample(count, [&](std::size_t j) {
-          points[j] = surfacePoint(camera, layer.visibility, surface[start + j]);
-        });
-        const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
-        for (std::size_t j = 0; j < count; ++j)
-          for (int c = 0; c < 3; ++c) channels[j * 3 + c] = static_cast<float>(e[j][c]);
-      } else {
-        onFaces.resize(count);
-        forEachSample(count, [&](std::size_t j) {
-          const std::size_t i = surface[start + j];
-          const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[i]);
-          onFaces[j] =
-              FacePoint{surfacePoint(camera, layer.visibility, i).position, face.index, face.face};
-        });
-        field->evaluate(onFaces, channels);
-      }
-      forEachSample(count, [&](std::size_t j) {
-        const std::size_t i = surface[start + j];
-        const Vec3 e(channels[j * 3], channels[j * 3 + 1], channels[j * 3 + 2]);
-        const int solid = visibility.visible().face(layer.visibility.faceIds[i]).index;
-        const Vec3 l = solidReflectance[solid].cwiseProduct(e) / std::numbers::pi;
-        layer.illuminance[i] += static_cast<float>(photometric(e));
-        for (int c = 0; c < 3; ++c) layer.rgb[i * 3 + c] += static_cast<float>(l[c]);
-      });
-      done(end - start);
+  // The interreflected light (lx per channel, 3 per point) at `points`, the layer's samples
+  // `indices`: from the field, or gathered exactly at each point.
+  void indirectLight(const SampleLayer& layer, std::span<const std::size_t> indices,
+                     const std::vector<SamplePoint>& points, bool exact, std::vector<float>& out) {
+    const std::size_t count = points.size();
+    out.assign(count * 3, 0.0f);
+    if (exact) {
+      const std::vector<Eigen::Vector3d> e = interreflection->indirectChannels(points);
+      for (std::size_t j = 0; j < count; ++j)
+        for (int c = 0; c < 3; ++c) out[j * 3 + c] = static_cast<float>(e[j][c]);
+      return;
     }
+    std::vector<FacePoint> onFaces(count);
+    forEachSample(count, [&](std::size_t j) {
+      const VisibleFace& face = visibility.visible().face(layer.visibility.faceIds[indices[j]]);
+      onFaces[j] = FacePoint{points[j].position, face.index, face.face};
+    });
+    field->evaluate(onFaces, out);
   }
 
   SampleLayer renderSamples(const Camera& camera, int interval, bool exactIndirect,
@@ -314,38 +319,35 @@ struct Renderer::State {
     stats.samples += n;
     stats.surfaceSamples += surface.size();
     IntervalPlan plan(camera.width, camera.height, layer.visibility.faceIds, needed, interval);
-    const std::size_t work = surface.size() * (interreflection ? 2 : 1);
+    const std::size_t work = surface.size();
     stats.shadingSeconds += secondsSince(start);
 
     start = Clock::now();
-    const int columns = classColumns();
-    std::vector<ShadowClass> classes(n * columns, ShadowClass::Unlit);
+    const double indirectBefore = stats.indirectSeconds;
+    const IndirectFieldStats fieldBefore = field ? field->stats() : IndirectFieldStats{};
+    const std::size_t exactBefore = stats.exactSamples;
+    std::vector<ShadowClass> classes(n * classColumns(), ShadowClass::Unlit);
+    const SampleOutputs out{layer, classes, stats, exactIndirect};
     std::size_t done = 0;
     const auto advance = [&](std::size_t count) {
       done += count;
+      stats.exactSamples += count;
       if (progress) progress(std::min(done, work), work);
     };
-    const std::vector<std::size_t>& first = plan.firstPass();
-    evaluate(camera, layer, first, classes, advance);
-    stats.exactSamples += first.size();
+    evaluate(camera, plan.firstPass(), out, advance);
     // The plan checks what the image shows (RGB luminance) and the E AOV, and fills both where
-    // it interpolates.
-    const SampleValues checked[] = {{layer.illuminance, 1}, {layer.rgb, 3}};
+    // it interpolates; the interreflected light in them bends where the field's triangles meet.
+    const bool kinks = interreflection != nullptr;
+    const SampleValues checked[] = {{layer.illuminance, 1, kinks}, {layer.rgb, 3, kinks}};
     for (std::vector<std::size_t> round = plan.next(classes, shadowEdges, checked); !round.empty();
-         round = plan.next(classes, shadowEdges, checked)) {
-      evaluate(camera, layer, round, classes, advance);
-      stats.exactSamples += round.size();
-    }
-    stats.illuminanceSeconds += secondsSince(start);
+         round = plan.next(classes, shadowEdges, checked))
+      evaluate(camera, round, out, advance);
+    stats.illuminanceSeconds += secondsSince(start) - (stats.indirectSeconds - indirectBefore);
     if (interreflection) {
-      start = Clock::now();
-      const IndirectFieldStats before = field->stats();
-      addIndirect(camera, layer, surface, exactIndirect, advance);
       stats.gatheredSamples += exactIndirect
-                                   ? surface.size()
-                                   : field->stats().nodes - before.nodes +
-                                         field->stats().pointsGathered - before.pointsGathered;
-      stats.indirectSeconds += secondsSince(start);
+                                   ? stats.exactSamples - exactBefore
+                                   : field->stats().nodes - fieldBefore.nodes +
+                                         field->stats().pointsGathered - fieldBefore.pointsGathered;
     }
     if (progress) progress(work, work);
     return layer;
