@@ -17,7 +17,8 @@ enum class FieldTriangleState : uint8_t { Open, Kept, Cut, Exact };
 // descends every few pixels, and a level's whole triangle (a few cache lines, tens of MB in
 // all) missed the cache at every step.
 struct FieldTreeLink {
-  int children = -1;  // the first of four consecutive triangles once cut
+  // The first of four consecutive triangles once cut; once kept, its FieldKeptTriangle.
+  int children = -1;
   FieldTriangleState state = FieldTriangleState::Open;
 };
 
@@ -36,6 +37,23 @@ struct alignas(64) FieldTriangle {
   // (λ_a, λ_b, λ_c) of a point in the face's frame.
   Eigen::Vector3d barycentric(const Eigen::Vector2d& x) const {
     const Eigen::Vector2d l = toBarycentric * (x - corner[0]);
+    return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
+  }
+};
+
+// A kept triangle's interpolant in three cache lines of its own: the barycentric map and the light
+// at its six nodes (FieldTriangle::node's order), copied when the triangle is kept. A point that
+// lands on it reads nothing else: a render's exact samples in interval mode lie pixels apart and
+// land on another triangle at almost every point, whose FieldTriangle and six scattered nodes
+// were as many cache misses.
+struct alignas(64) FieldKeptTriangle {
+  Eigen::Matrix2d toBarycentric = Eigen::Matrix2d::Identity();
+  Eigen::Vector2d corner = Eigen::Vector2d::Zero();  // the first corner, FieldTriangle's
+  std::array<Eigen::Vector3d, 6> light{};            // lx per channel
+
+  // As FieldTriangle::barycentric, to the last bit.
+  Eigen::Vector3d barycentric(const Eigen::Vector2d& x) const {
+    const Eigen::Vector2d l = toBarycentric * (x - corner);
     return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
   }
 };

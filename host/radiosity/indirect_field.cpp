@@ -77,6 +77,7 @@ struct IndirectField::State {
   // Each node's interreflected light, lx per channel (zero until gathered), apart from the
   // nodes: the interpolation at every pixel reads 24 bytes of a node instead of the whole node.
   std::vector<Eigen::Vector3d> nodeLight;
+  std::vector<FieldKeptTriangle> kept;  // the kept triangles' interpolants (TreeLink::children)
   std::unordered_map<NodeKey, int, NodeKeyHash> nodeAt;
   IndirectFieldStats stats;
   // A point's solid and the bits of its coordinates.
@@ -375,7 +376,11 @@ struct IndirectField::State {
       if (miss > 0.0) worst = std::max(worst, miss / std::max(photometric(m), 1e-300));
     }
     if (worst <= options.tolerance && tri.depth >= options.minDepth) {
+      FieldKeptTriangle k{tri.toBarycentric, tri.corner[0], {}};
+      for (int n = 0; n < 6; ++n) k.light[n] = nodeLight[tri.node[n]];
+      tree[t].children = static_cast<int>(kept.size());
       tree[t].state = TriangleState::Kept;
+      kept.push_back(k);
       return;
     }
     if (tri.depth >= options.maxDepth) {
@@ -392,6 +397,13 @@ struct IndirectField::State {
     placePendingNodes();
     tree[t].children = first;
     tree[t].state = TriangleState::Cut;
+  }
+
+  // x's barycentric coordinates in triangle t, from its kept interpolant where it has one.
+  Eigen::Vector3d barycentric(int t, const Vec2& x) const {
+    return tree[t].state == TriangleState::Kept
+               ? kept[static_cast<std::size_t>(tree[t].children)].barycentric(x)
+               : triangles[t].barycentric(x);
   }
 
   // The kept or open triangle below `t` that holds x.
@@ -430,7 +442,7 @@ struct IndirectField::State {
     }
     if (cursor.face < 0) return -1;
     local = faces[cursor.face].local(p.position);
-    if (cursor.leaf >= 0 && triangles[cursor.leaf].barycentric(local).minCoeff() > kInsideLeaf)
+    if (cursor.leaf >= 0 && barycentric(cursor.leaf, local).minCoeff() > kInsideLeaf)
       return nearBoundary(cursor.root, local) ? -1 : cursor.leaf;
     double outside = INFINITY;
     int t = -1;
@@ -458,10 +470,10 @@ struct IndirectField::State {
 
   // The field's value at x on kept triangle t, per channel.
   void interpolate(int t, const Vec2& x, float* channels) const {
-    const FieldTriangle& tri = triangles[t];
+    const FieldKeptTriangle& tri = kept[static_cast<std::size_t>(tree[t].children)];
     const std::array<double, 6> w = quadraticWeights(tri.barycentric(x));
     Eigen::Vector3d e = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 6; ++k) e += w[k] * nodeLight[tri.node[k]];
+    for (int k = 0; k < 6; ++k) e += w[k] * tri.light[k];
     for (int c = 0; c < 3; ++c) channels[c] = static_cast<float>(e[c]);
   }
 
