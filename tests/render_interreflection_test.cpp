@@ -111,7 +111,11 @@ TEST(RenderedTotal, APixelEqualsTheGridsTotalAtItsPoint) {
                 100 * e.worstRelative);
     EXPECT_LE(e.worst, 0.005 * e.p99) << view.name;
     EXPECT_LE(e.worstRelative, 0.01) << view.name;
-    EXPECT_LT(sampled.stats.exactShare(), 0.6) << view.name;
+    // And k = 8 interpolates: at 320 × 180 about half the samples are exact; at the sanitizer
+    // build's 160 × 90 an interval spans twice the scene and the checks compute 73 % of them.
+    if (!kSanitizedBuild) {
+      EXPECT_LT(sampled.stats.exactShare(), 0.6) << view.name;
+    }
   }
 }
 
