@@ -22,6 +22,13 @@ struct FieldTreeLink {
   FieldTriangleState state = FieldTriangleState::Open;
 };
 
+// (λ_a, λ_b, λ_c) of x in the face's frame, from a triangle's map and first corner.
+inline Eigen::Vector3d barycentricIn(const Eigen::Matrix2d& toBarycentric,
+                                     const Eigen::Vector2d& corner, const Eigen::Vector2d& x) {
+  const Eigen::Vector2d l = toBarycentric * (x - corner);
+  return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
+}
+
 // What a point's barycentric coordinates need (the map from the first corner, the corner)
 // lies in the first cache line, the nodes the interpolation reads in the second.
 struct alignas(64) FieldTriangle {
@@ -36,8 +43,7 @@ struct alignas(64) FieldTriangle {
 
   // (λ_a, λ_b, λ_c) of a point in the face's frame.
   Eigen::Vector3d barycentric(const Eigen::Vector2d& x) const {
-    const Eigen::Vector2d l = toBarycentric * (x - corner[0]);
-    return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
+    return barycentricIn(toBarycentric, corner[0], x);
   }
 };
 
@@ -53,8 +59,7 @@ struct alignas(64) FieldKeptTriangle {
 
   // As FieldTriangle::barycentric, to the last bit.
   Eigen::Vector3d barycentric(const Eigen::Vector2d& x) const {
-    const Eigen::Vector2d l = toBarycentric * (x - corner);
-    return Eigen::Vector3d(1.0 - l.x() - l.y(), l.x(), l.y());
+    return barycentricIn(toBarycentric, corner, x);
   }
 };
 

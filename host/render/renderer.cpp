@@ -45,6 +45,15 @@ struct SampleLayer {
   std::vector<float> rgb;          // cd/m², 3 per sample
 };
 
+// What one render's exact samples write and count: the layer's values, each sample's shadow
+// class per class column (sample × classColumns()) for the interval plan, the render's stats.
+struct SampleOutputs {
+  SampleLayer& layer;
+  std::vector<ShadowClass>& classes;
+  RenderStats& stats;
+  bool exactIndirect = false;  // gather the interreflected light at each sample, not the field
+};
+
 // The sun's shadow class at a point from its sunlight `e` (lx): lit where it gets the whole
 // disk's E_dn·cos θ times the transmittance of one glazing (or of none) to within 1e-6 of that;
 // umbra where the sun cannot reach it whatever stands in the room (out of the beam through the
@@ -173,15 +182,6 @@ struct Renderer::State {
     if (scene->sun) edges.push_back(ShadowEdges::Sharp);
     return edges;
   }
-
-  // What one render's exact samples write and count: the layer's values, each sample's shadow
-  // class per class column (sample × classColumns()) for the interval plan, the render's stats.
-  struct SampleOutputs {
-    SampleLayer& layer;
-    std::vector<ShadowClass>& classes;
-    RenderStats& stats;
-    bool exactIndirect = false;  // gather the interreflected light at each sample, not the field
-  };
 
   // Exact illuminance and luminance at `indices` (in batches of kBatch), the interreflected
   // light included where the renderer computes it, so that the interval plan checks and
@@ -328,11 +328,9 @@ struct Renderer::State {
     const std::size_t exactBefore = stats.exactSamples;
     std::vector<ShadowClass> classes(n * classColumns(), ShadowClass::Unlit);
     const SampleOutputs out{layer, classes, stats, exactIndirect};
-    std::size_t done = 0;
     const auto advance = [&](std::size_t count) {
-      done += count;
       stats.exactSamples += count;
-      if (progress) progress(std::min(done, work), work);
+      if (progress) progress(std::min(stats.exactSamples - exactBefore, work), work);
     };
     evaluate(camera, plan.firstPass(), out, advance);
     // The plan checks what the image shows (RGB luminance) and the E AOV, and fills both where
