@@ -8,6 +8,7 @@
  * Here: one edge's term in eight lanes, and the face clipped by each lane's horizon. */
 
 #include "arc_term.cl"
+#include "planar_term.cl"
 
 /* cross(b, a) is computed as cross(b − a, a): for a short edge far from P, a and b are long and
  * nearly parallel, b − a is exact in float (Sterbenz) and short, and the products are |e|·|a|
@@ -192,17 +193,34 @@ inline int8 chord_cut8(const HorizonChord8* c) {
 }
 
 /* The sum over the clipped contour, whose points are vectors from P or (centre not null) offsets
- * from the centre, the chord's ends too. */
+ * from the centre, the chord's ends too; with `planar` (not null, centre null) each term by the
+ * planar form, whose edges' Δψ it sums. */
 typedef struct {
   PnSum8 sum;
   HorizonChord8 chord;
   const PnCentre8* centre;
   float8 centre_height; /* the centre's height above the horizon, or 0 */
   const PnEmission* em; /* how the face emits */
+  PnPlanarFrame8* planar;
 } HorizonSum8;
+
+/* One arc's term in the sum's form, in the lanes of `use`. */
+inline void horizon_add8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float8 bx, float8 by,
+                         float8 bz, float8 nx, float8 ny, float8 nz, int8 use) {
+  float8 term;
+  if (h->planar) {
+    float8 dpsi;
+    term = planar_term8(ax, ay, az, bx, by, bz, h->planar, nx, ny, nz, h->em, &dpsi);
+    h->planar->dpsi_sum += select((float8)(0.0f), dpsi, use);
+  } else {
+    term = contour_term8(h->centre, ax, ay, az, bx, by, bz, nx, ny, nz, h->em);
+  }
+  pn_sum_add8(&h->sum, select((float8)(0.0f), term, use));
+}
 
 inline void horizon_begin8(HorizonSum8* h, const PnCentre8* centre, float8 nx, float8 ny, float8 nz,
                            const PnEmission* em) {
+  h->planar = 0;
   h->centre = centre;
   h->centre_height = centre ? nx * centre->x + ny * centre->y + nz * centre->z : 0.0f;
   h->em = em;
@@ -216,10 +234,9 @@ inline void horizon_edge8(HorizonSum8* h, float8 ax, float8 ay, float8 az, float
   int8 a_in = ha >= 0.0f, b_in = hb >= 0.0f;
   float8 t = ha / (ha - hb); /* used only where exactly one end is above the horizon */
   float8 cx = ax + t * (bx - ax), cy = ay + t * (by - ay), cz = az + t * (bz - az);
-  float8 term = contour_term8(h->centre, select(cx, ax, a_in), select(cy, ay, a_in),
-                              select(cz, az, a_in), select(cx, bx, b_in), select(cy, by, b_in),
-                              select(cz, bz, b_in), nx, ny, nz, h->em);
-  pn_sum_add8(&h->sum, select((float8)(0.0f), term, a_in | b_in));
+  horizon_add8(h, select(cx, ax, a_in), select(cy, ay, a_in), select(cz, az, a_in),
+               select(cx, bx, b_in), select(cy, by, b_in), select(cz, bz, b_in), nx, ny, nz,
+               a_in | b_in);
   chord_track8(&h->chord, a_in, b_in, cx, cy, cz);
 }
 
@@ -239,12 +256,11 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   const HorizonChord8* c = &h->chord;
   int8 cut = chord_cut8(c);
   if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
-    pn_sum_add8(&h->sum,
-                select((float8)(0.0f),
-                       contour_term8(h->centre, c->exit_x, c->exit_y, c->exit_z, c->entry_x,
-                                     c->entry_y, c->entry_z, nx, ny, nz, h->em),
-                       cut));
-  return h->sum.s + h->sum.c;
+    horizon_add8(h, c->exit_x, c->exit_y, c->exit_z, c->entry_x, c->entry_y, c->entry_z, nx, ny,
+                 nz, cut);
+  if (!h->planar) return h->sum.s + h->sum.c;
+  /* An unoccluded face's E is never negative; its rounding near the face's plane may be. */
+  return fmax((h->sum.s + h->sum.c) + planar_closing8(h->planar, h->em), 0.0f);
 }
 
 /* whole_face8 for a small face (small_face8): its terms relative to its reference vertex k. */
@@ -285,6 +301,10 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   int k = 0;
   int8 small_lanes = 0;
   const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
+  if (pn_any(planar_lanes8(pts, face, &em, ax, ay, az) & ~small_lanes)) {
+    *cut = true; /* unoccluded_face8 takes the planar form where it serves */
+    return 0.0f;
+  }
   if (any_small && pn_all(small_lanes)) {
     for (int i = 1; i < m; ++i) {
       pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &bx, &by, &bz);
@@ -312,13 +332,15 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
 }
 
 /* unoccluded_face8's sum with each term taken from P (centre null) or relative to the small
- * face's reference vertex k. */
+ * face's reference vertex k, or (planar not null, centre null) by the planar form. */
 inline float8 horizon_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
-                            const PnCentre8* centre, int k, const PnEmission* em) {
+                            const PnCentre8* centre, int k, const PnEmission* em,
+                            PnPlanarFrame8* planar) {
   const float8 nx = pts->nx, ny = pts->ny, nz = pts->nz;
   float8 ax, ay, az, bx, by, bz;
   HorizonSum8 h;
   horizon_begin8(&h, centre, nx, ny, nz, em);
+  h.planar = planar;
   const int m = face.vertexCount;
   face_vertex8(pts, face, 0, k, tables, centre, &ax, &ay, &az);
   float8 ha =
@@ -327,8 +349,19 @@ inline float8 horizon_face8(const Points8* pts, PnSourceFace face, const PnScene
     face_vertex8(pts, face, i + 1 == m ? 0 : i + 1, k, tables, centre, &bx, &by, &bz);
     horizon_next8(&h, &ax, &ay, &az, &ha, bx, by, bz, nx, ny, nz);
   }
-  float8 sum = small_face_sum8(centre, horizon_end8(&h, nx, ny, nz));
+  const float8 sum = small_face_sum8(centre, horizon_end8(&h, nx, ny, nz));
   return select((float8)(0.0f), sum, in_front8(face, pts->px, pts->py, pts->pz));
+}
+
+/* The face's lanes that are not small against their distance: the planar form in the lanes
+ * that see it near its plane, Lambert's (or the moment) terms from P in the others. */
+inline float8 large_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables,
+                          const PnEmission* em, int8 planar) {
+  if (!pn_any(planar)) return horizon_face8(pts, face, tables, 0, 0, em, 0);
+  PnPlanarFrame8 frame = planar_frame8(pts, face, tables);
+  const float8 e_planar = horizon_face8(pts, face, tables, 0, 0, em, &frame);
+  if (pn_all(planar)) return e_planar;
+  return select(horizon_face8(pts, face, tables, 0, 0, em, 0), e_planar, planar);
 }
 
 inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
@@ -338,9 +371,10 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   int8 small_lanes = 0;
   float8 ax, ay, az;
   pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
+  const int8 planar = planar_lanes8(pts, face, &em, ax, ay, az);
   if (!small_face8(pts, face, tables, ax, ay, az, &small, &k, &small_lanes))
-    return horizon_face8(pts, face, tables, 0, 0, &em);
-  const float8 e_small = horizon_face8(pts, face, tables, &small, k, &em);
+    return large_face8(pts, face, tables, &em, planar);
+  const float8 e_small = horizon_face8(pts, face, tables, &small, k, &em, 0);
   if (pn_all(small_lanes)) return e_small;
-  return select(horizon_face8(pts, face, tables, 0, 0, &em), e_small, small_lanes);
+  return select(large_face8(pts, face, tables, &em, planar & ~small_lanes), e_small, small_lanes);
 }

@@ -1,0 +1,213 @@
+/* The contour term of a face seen from near its own plane, taken in that plane (docs/method.md,
+ * the precision note: "A face seen from near its own plane"). For a point P at height h above
+ * the plane of a face whose luminance is a polynomial in g, the cosine from the face's normal N
+ * (uniform: order 0; a luminaire's opening: its fitted powers), F = P − hN the foot of P on the
+ * plane and ρ = y − F for a point y of the visible region R (r² = ρ² + h²):
+ *   M_k = ∫_R g^k (n·ω) dω = h^{k+1} ∫_R (n·ρ − h n·N) / r^{k+4} dA.
+ * Per edge of R (t its unit direction, m = t × N, d = m·A the signed distance of F from its
+ * line, τ the position along the line from the foot of the perpendicular, D² = d² + h²) and
+ * p = k + 2:
+ * - the in-plane part, by the divergence theorem: J_p = h^{p−1} ∫ dτ / (τ² + D²)^{p/2},
+ *   J_2 = h θ / D (θ the angle the edge subtends at P), J_3 = (h²/D²) [τ / r]_A^B,
+ *   J_{p+2} = (h²/D²) ([(τ / r) g^{p−1}]_A^B / p + (p − 1) J_p / p);
+ * - the part along N, over the triangle (F, A, B) in the azimuth ψ about F:
+ *   h^p ∫ dA / r^{p+2} = (Δψ − A_p) / p,  A_p = ∫_edge g^p dψ = A_{p−2} − (d/h) J_p
+ *   (A_0 = Δψ, A_1 = [atan(h τ / (d r))]_A^B), or, summed from the other end,
+ *   A_p = (d/h) Σ_{j>=1} J_{p+2j}, whose terms shrink as (h²/D²)^j;
+ * so that 2 M_k(edge) = −(2/p) (n·m J_p + (n·N)(Δψ − A_p)).
+ *
+ * Why: Lambert's terms of a face seen edge-on are each of the order of the edge's angle while
+ * their sum is of the order of h² (the part along N) or h (the rest), so their rounding grows as
+ * 1/sin²e of E, e the elevation above the face's plane. Here the edges' Δψ sum to 2π times the
+ * contour's winding about F, taken as that (planar_closing8); every other part carries its power
+ * of h itself: A_p as the tail sum where h²/D² <= PN_PLANAR_TAIL_RATIO (in closed form for
+ * uniform luminance), forward above it, where g is not small and nothing cancels much. h comes
+ * from the double-float positions to a rounding of itself (planar_height8); the in-plane
+ * coordinates need only a rounding of the distance. Eight lanes. */
+
+#include "luminance_moments.cl"
+
+#define PN_PLANAR_TAIL_RATIO 0.25f /* h²/D² at most where A_p is the tail sum */
+#define PN_PLANAR_TAIL 14          /* tail terms: 0.25^14 = 3.7e-9 */
+#define PN_PLANAR_MAX_P (PN_MOMENT_DIRECT_ORDER + 2 + 2 * PN_PLANAR_TAIL)
+
+/* Whether the planar form serves a face: uniform luminance, or a polynomial about −N (a
+ * luminaire's opening) of an order the direct recurrences take. */
+inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
+  if (em->order < 0) return true;
+  return em->order <= PN_MOMENT_DIRECT_ORDER &&
+         em->wx * face.plane.x + em->wy * face.plane.y + em->wz * face.plane.z < -0.9999995f;
+}
+
+/* The lanes that see a face near its plane: P's height above the plane below PN_PLANAR_SINE
+ * times its distance from vertex 0 (x, y, z from P). Lambert's terms there lose as 1/sin²e
+ * (above); above it they keep E to a few roundings, as the planar form does, at less
+ * cost. */
+#define PN_PLANAR_SINE 0.5f
+inline int8 planar_lanes8(const Points8* pts, PnSourceFace face, const PnEmission* em, float8 x,
+                          float8 y, float8 z) {
+  if (!planar_emission(face, em)) return 0;
+  /* From vertex 0's offset, as every other choice of form: a lane's E does not depend on the
+   * scene's origin (the positions' hi/lo split), nor on the lanes beside it. */
+  const float8 h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);
+  return h * h < PN_PLANAR_SINE * PN_PLANAR_SINE * (x * x + y * y + z * z);
+}
+
+/* What the planar form needs of a face per lane: P's height h above the face's plane, n·N, the
+ * plane's normal N, and the running sum of the edges' Δψ. */
+typedef struct {
+  float8 h, nn, dpsi_sum;
+  float3 n;
+} PnPlanarFrame8;
+
+/* h = N·(P − V0) per lane, V0 the face's first vertex: V0 − P per coordinate as an unevaluated
+ * sum (TwoSum of the hi parts, plus the lo parts), each product's rounding kept by fma, so that h
+ * is good to a rounding of itself however far P is from the face. */
+inline float8 planar_height8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
+  const PnPosition v = tables->sourceVertices[face.firstVertex];
+  const float3 n = face.plane.xyz;
+  PnSum8 sum = {0.0f, 0.0f};
+  float8 rest = 0.0f;
+#define PN_PLANAR_COORDINATE(c, pc, lc)                                 \
+  {                                                                     \
+    float8 s = v.hi.c - pts->pc, bp = s - v.hi.c;                       \
+    float8 err = (v.hi.c - (s - bp)) + (-pts->pc - bp) + (v.lo.c - pts->lc); \
+    float8 prod = n.c * s;                                              \
+    pn_sum_add8(&sum, prod);                                            \
+    rest += fma((float8)(n.c), s, -prod) + n.c * err;                   \
+  }
+  PN_PLANAR_COORDINATE(x, px, lx)
+  PN_PLANAR_COORDINATE(y, py, ly)
+  PN_PLANAR_COORDINATE(z, pz, lz)
+#undef PN_PLANAR_COORDINATE
+  return -(sum.s + (sum.c + rest));
+}
+
+/* The planar frame of a face for the work-item's lanes. */
+inline PnPlanarFrame8 planar_frame8(const Points8* pts, PnSourceFace face,
+                                    const PnSceneTables* tables) {
+  PnPlanarFrame8 frame;
+  frame.n = face.plane.xyz;
+  frame.h = planar_height8(pts, face, tables);
+  frame.nn = pts->nx * frame.n.x + pts->ny * frame.n.y + pts->nz * frame.n.z;
+  frame.dpsi_sum = 0.0f;
+  return frame;
+}
+
+/* The term of the edge a → b (vectors from P, both in the face's plane): 2 Σ_k c_k M_k(edge)
+ * less its Δψ part, which *dpsi receives (the caller sums them for planar_closing8). */
+inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
+                           const PnPlanarFrame8* frame, float8 nx, float8 ny, float8 nz,
+                           const PnEmission* em, float8* dpsi) {
+  const float8 h = frame->h, nn = frame->nn;
+  const float3 N = frame->n;
+  /* The edge in the plane: F + A, F + B, t its direction, m = t × N, d = m·A, ta and tb the
+   * positions of A and B along t from the foot of the perpendicular from F; d and the positions
+   * from the edge's midpoint, so that the edge b → a gives exactly −(its term) (a contour that
+   * runs along an edge and back, as the horizon's chord of a face that only touches the horizon
+   * does, sums to 0). */
+  const float8 fx = 0.5f * (ax + bx) + h * N.x, fy = 0.5f * (ay + by) + h * N.y,
+               fz = 0.5f * (az + bz) + h * N.z;
+  const float8 ex = bx - ax, ey = by - ay, ez = bz - az;
+  const float8 len = sqrt(ex * ex + ey * ey + ez * ez);
+  const int8 degenerate = len <= 0.0f;
+  const float8 inv = 1.0f / select(len, (float8)(1.0f), degenerate);
+  const float8 tx = ex * inv, ty = ey * inv, tz = ez * inv;
+  const float8 mx = ty * N.z - tz * N.y, my = tz * N.x - tx * N.z, mz = tx * N.y - ty * N.x;
+  const float8 d = mx * fx + my * fy + mz * fz;
+  const float8 mid = tx * fx + ty * fy + tz * fz, ta = mid - 0.5f * len, tb = mid + 0.5f * len;
+  const float8 d2 = d * d, h2 = h * h, big_d2 = d2 + h2, big_d = sqrt(big_d2);
+  const float8 theta = atan2(len * big_d, big_d2 + ta * tb);
+  const float8 psi = atan2(d * len, d2 + ta * tb);
+  *dpsi = select(psi, (float8)(0.0f), degenerate);
+  const float8 q = h2 / big_d2; /* (h / D)², the largest g² on the edge's line */
+  const int8 tail = q <= PN_PLANAR_TAIL_RATIO;
+  const float8 nm = nx * mx + ny * my + nz * mz;
+  const float8 d_over_h = d / fmax(h, 1e-30f);
+  const float8 j2 = h * theta / big_d;
+  float8 term;
+  if (em->order <= 0) {
+    /* Uniform luminance: A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d, c = |d| / D. Where h²/D² is
+     * small, as sgn d (atan(u) − c atan(c u)) between the ends (u = τ/|d|), written without
+     * cancellation: atan of the difference of atan(u) − atan(c u) at both ends, plus (1 − c) θ,
+     * 1 − c = h² / (D (D + |d|)). */
+    const float8 ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;
+    const float8 num = omc * ad * len * (d2 - c * ta * tb);
+    const float8 den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;
+    const float8 a2_tail = copysign(atan2(num, den) + omc * theta, d);
+    const float8 a2 = select(psi - d_over_h * j2, a2_tail, tail);
+    const float c0 = em->order < 0 ? 1.0f : em->c[0];
+    term = -c0 * (nm * j2 - nn * a2);
+  } else {
+    /* J_p, p = 2 .. last (the tail's powers where some lane takes it). */
+    const int order = em->order;
+    const int last = pn_any(tail) ? order + 2 + 2 * PN_PLANAR_TAIL : order + 2;
+    const float8 ra = sqrt(ta * ta + big_d2), rb = sqrt(tb * tb + big_d2);
+    const float8 ga = h / ra, gb = h / rb, ua = ta / ra, ub = tb / rb;
+    /* ub − ua without cancellation where both ends lie on one side of the perpendicular's foot:
+     * (tb² ra² − ta² rb²) / (…) = len (ta + tb) D² / ((tb ra + ta rb) ra rb). */
+    const float8 du =
+        select(ub - ua, len * (ta + tb) * big_d2 / ((tb * ra + ta * rb) * ra * rb), ta * tb > 0.0f);
+    float8 j[PN_PLANAR_MAX_P + 1];
+    j[2] = j2;
+    j[3] = q * du;
+    /* The bracket [u g^{p−1}]_A^B as du g_B^{p−1} + u_A (g_B^{p−1} − g_A^{p−1}), the latter by
+     * D_{n+1} = g_B D_n + g_A^n (g_B − g_A), g_B − g_A = −h len (ta + tb) / (ra rb (ra + rb)):
+     * each a product of small factors where the edge is short against its distance. */
+    const float8 dg = -h * len * (ta + tb) / (ra * rb * (ra + rb));
+    float8 pa = ga, pb = gb, dp = dg; /* g^{p−1} at both ends, and their difference */
+    for (int p = 2; p + 2 <= last; ++p) {
+      const float pf = (float)p;
+      j[p + 2] = q * ((du * pb + ua * dp) / pf + (pf - 1.0f) / pf * j[p]);
+      dp = gb * dp + pa * dg;
+      pa *= ga;
+      pb *= gb;
+    }
+    /* A_p forward from A_0 = Δψ and A_1 = [atan(h τ / (d r))]_A^B, in the lanes not in the
+     * tail; the tail lanes' A_p = (d/h) Σ_{j>=1} J_{p+2j}, from the highest p down. */
+    float8 a_even = psi, a_odd = atan2(h * d * du, d2 + h2 * ua * ub);
+    PnSum8 inplane = {0.0f, 0.0f}, normal = {0.0f, 0.0f};
+    for (int k = 0; k <= order; ++k) {
+      const int p = k + 2;
+      const float ck = em->c[k] / (float)p;
+      float8* a = (p & 1) ? &a_odd : &a_even;
+      *a -= d_over_h * j[p];
+      pn_sum_add8(&inplane, ck * j[p]);
+      pn_sum_add8(&normal, ck * select(*a, (float8)(0.0f), tail));
+    }
+    if (pn_any(tail)) {
+      float8 tail_even = 0.0f, tail_odd = 0.0f;
+      for (int p = last; p >= order + 3; --p) {
+        if (p & 1)
+          tail_odd += j[p];
+        else
+          tail_even += j[p];
+      }
+      for (int k = order; k >= 0; --k) {
+        const int p = k + 2;
+        float8* sum = (p & 1) ? &tail_odd : &tail_even;
+        pn_sum_add8(&normal, em->c[k] / (float)p * select((float8)(0.0f), d_over_h * *sum, tail));
+        *sum += j[p];
+      }
+    }
+    term = -2.0f * (nm * (inplane.s + inplane.c) - nn * (normal.s + normal.c));
+  }
+  return select(term, (float8)(0.0f), degenerate);
+}
+
+/* The face's Δψ part: −2 (n·N) Σ_k c_k / (k + 2) times the sum of its edges' Δψ, which is 2π
+ * times the winding of the contour about F, 0 or 2π up to the terms' rounding, and is taken as
+ * that. Where F lies on the contour (within PN_PLANAR_ON_CONTOUR rad of the sum) the sum is the
+ * angle the region spans at F (π on an edge, the corner's angle at a vertex) and is kept as it
+ * is: E is then of the order of the face-on light, and nothing cancels. */
+#define PN_PLANAR_ON_CONTOUR 1e-3f
+inline float8 planar_closing8(const PnPlanarFrame8* frame, const PnEmission* em) {
+  const float8 dpsi_sum = frame->dpsi_sum, nn = frame->nn;
+  const float two_pi = 6.283185307f;
+  float8 winding = rint(dpsi_sum / two_pi) * two_pi;
+  winding = select(dpsi_sum, winding, fabs(dpsi_sum - winding) < PN_PLANAR_ON_CONTOUR);
+  float weight = 0.0f;
+  const int order = em->order < 0 ? 0 : em->order;
+  for (int k = 0; k <= order; ++k) weight += (em->order < 0 ? 1.0f : em->c[k]) / (float)(k + 2);
+  return -2.0f * nn * winding * weight;
+}

@@ -1,0 +1,185 @@
+// Points that see a face from near its own plane (emission grazing): the unoccluded kernel
+// against the exact integral in double, for a Lambertian rect source and for luminaires' fitted
+// luminances (orders 0, 2 and 9), level and tilted. Lambert's contour terms lose there as 1/sin²e
+// of E (e the elevation above the face's plane); the planar form (kernels/planar_term.cl) keeps
+// E to the kernel's relative tolerance.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "geometry/tolerance.hpp"
+#include "luminaire_test_support.hpp"
+#include "photometry/luminous_opening.hpp"
+#include "photometry_files.hpp"
+#include "reference/exact_illuminance.hpp"
+#include "reference/opening_illuminance.hpp"
+#include "test_files.hpp"
+#include "test_scenes.hpp"
+
+namespace penumbra {
+namespace {
+
+using namespace penumbra::testing;
+namespace tf = photometry::testfiles;
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegree = kPi / 180.0;
+
+// A rotationally symmetric IES file of `candela`(γ) with a 0.6 × 0.3 m opening.
+std::filesystem::path writeIes(const TempDir& dir, const std::string& name,
+                               const std::function<double(double)>& candela) {
+  tf::IesSpec spec;
+  spec.vertical = tf::steps(0, 180, 1);
+  spec.horizontal = {0};
+  spec.length = 0.6;
+  spec.width = 0.3;
+  spec.candela = [&](double, double gammaDeg) { return candela(gammaDeg); };
+  return writeFile(dir.path(), name, tf::iesText(spec));
+}
+
+double cosine(double gammaDeg) {
+  return std::cos(gammaDeg * kDegree);
+}
+
+// Points around the opening's centre at elevations `emitter` above the opening's plane, at
+// distances where the opening spans more than the kernel's small-face switch (its diagonal over
+// the distance above 0.1: kernels/lambert.cl), in six azimuths; each point's normal `receiver`
+// above the direction to the centre's horizon, tilted towards the plane, away from it, or
+// sideways. Only points that see every vertex at least 0.5° above both horizons are kept: there
+// the face is whole, and the horizon's own rounding is not what is measured.
+struct GrazingPoints {
+  std::vector<SamplePoint> points;
+  std::vector<double> emitterDeg;
+};
+
+GrazingPoints grazingPoints(const ConvexPolygon& opening, std::initializer_list<double> emitterDeg,
+                            std::initializer_list<double> receiverDeg) {
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& v : opening.vertices()) centre += v / double(opening.vertices().size());
+  const Vec3 normal = opening.normal();
+  const Vec3 u1 = normal.unitOrthogonal(), u2 = normal.cross(u1);
+  const double clearSine = std::sin(0.5 * kDegree);
+  GrazingPoints g;
+  for (const double e : emitterDeg)
+    for (const double r : receiverDeg)
+      for (double d = 0.7; d <= 5.0; d *= 1.25)
+        for (int azimuth = 0; azimuth < 6; ++azimuth)
+          for (int tilt = 0; tilt < 3; ++tilt) {
+            const double a = azimuth * kPi / 3 + 0.3;
+            const Vec3 dir = std::cos(e * kDegree) * (std::cos(a) * u1 + std::sin(a) * u2) +
+                             std::sin(e * kDegree) * normal;
+            const Vec3 p = centre + d * dir;
+            const Vec3 toCentre = (centre - p).normalized();
+            const Vec3 across = tilt == 2
+                                    ? toCentre.cross(normal).normalized()
+                                    : (normal - normal.dot(toCentre) * toCentre).normalized() *
+                                          (tilt == 0 ? 1.0 : -1.0);
+            const Vec3 n =
+                (std::sin(r * kDegree) * toCentre + std::cos(r * kDegree) * across).normalized();
+            bool clear = true;
+            for (const Vec3& v : opening.vertices()) {
+              const Vec3 w = (v - p).normalized();
+              clear = clear && n.dot(w) >= clearSine && normal.dot(-w) >= clearSine;
+            }
+            if (!clear) continue;
+            g.points.push_back({p, n, -1});
+            g.emitterDeg.push_back(e);
+          }
+  return g;
+}
+
+// The largest |kernel − exact| / exact, and the test of each point against the kernel's relative
+// tolerance.
+double worstRelative(const std::vector<double>& kernel, const std::vector<double>& exact,
+                     const GrazingPoints& g, const std::string& label) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < kernel.size(); ++i) {
+    EXPECT_GT(exact[i], 0.0) << label;
+    const double error = std::abs(kernel[i] - exact[i]);
+    worst = std::max(worst, error / exact[i]);
+    EXPECT_LE(error, Tolerance::kKernelRelative * exact[i])
+        << label << ", " << g.emitterDeg[i] << "° above the plane at ("
+        << g.points[i].position.transpose() << "), normal (" << g.points[i].normal.transpose()
+        << "): E = " << kernel[i] << ", exact " << exact[i];
+  }
+  return worst;
+}
+
+const LuminaireAim kAims[] = {{0.0, 0.0}, {30.0, 20.0}};
+
+TEST(NearAFacesPlane, ALambertianRectMeetsTheExactIntegralToTheKernelTolerance) {
+  // The rect of a luminaire's opening, level and turned and tilted, of uniform luminance.
+  TempDir dir("near-plane");
+  const auto file =
+      writeIes(dir, "lambertian.ies", [](double g) { return g <= 90 ? 1000.0 * cosine(g) : 0.0; });
+  for (const LuminaireAim& aim : kAims) {
+    const Luminaire luminaire =
+        placeLuminaire({file, Vec3(1.0, 0.5, 3.0), aim, 1.0, LuminaireModel::Area});
+    const ConvexPolygon opening = placedOpening(*luminaire.opening, luminaire.instances.front());
+    Scene scene;
+    scene.sources.push_back(areaSource(opening.vertices(), 1000.0));
+    const GrazingPoints g = grazingPoints(opening, {1, 2, 4, 8, 15, 25}, {20, 45, 90});
+    ASSERT_GT(g.points.size(), 1500u);
+    const std::vector<double> exact = exactIlluminance(scene, g.points)[0];
+    const std::vector<double> kernel = kernelE(scene, g.points);
+    const double worst = worstRelative(kernel, exact, g, "rect");
+    std::printf(
+        "  rect, tilt %.0f°: %zu points 1-25° above its plane, largest |E − exact| / E = "
+        "%.2e\n",
+        aim.tiltDeg, g.points.size(), worst);
+  }
+}
+
+TEST(NearAFacesPlane, LuminairesMeetTheExactIntegralToTheKernelTolerance) {
+  TempDir dir("near-plane");
+  struct Case {
+    const char* name;
+    std::filesystem::path file;
+    int order;
+  };
+  const Case cases[] = {
+      {"lambertian",
+       writeIes(dir, "lambertian.ies", [](double g) { return g <= 90 ? 1000.0 * cosine(g) : 0.0; }),
+       0},
+      {"quadratic",
+       writeIes(dir, "quadratic.ies",
+                [](double g) {
+                  const double c = cosine(g);
+                  return g <= 90 ? std::max(0.0, 1000.0 * c * (3 - 2 * c * c) / 3) : 0.0;
+                }),
+       2},
+      {"peaked",
+       writeIes(dir, "peaked.ies",
+                [](double g) {
+                  const double c = cosine(g);
+                  return g <= 90 ? std::max(0.0, 1000.0 * c * (0.25 + 0.75 * std::pow(c, 9))) : 0.0;
+                }),
+       9},
+  };
+  for (const Case& c : cases)
+    for (const LuminaireAim& aim : kAims) {
+      Scene scene;
+      scene.luminaires.push_back(
+          placeLuminaire({c.file, Vec3(1.0, 0.5, 3.0), aim, 1.0, LuminaireModel::Area}));
+      const Luminaire& luminaire = scene.luminaires.front();
+      ASSERT_EQ(luminaire.opening->fit.order(), c.order) << c.name;
+      const ConvexPolygon opening = placedOpening(*luminaire.opening, luminaire.instances.front());
+      const GrazingPoints g = grazingPoints(opening, {1, 2, 4, 8, 15, 25}, {20, 45, 90});
+      const std::vector<double> exact = referenceE(scene, g.points);
+      const std::vector<double> kernel = kernelE(scene, g.points);
+      const double worst = worstRelative(kernel, exact, g, c.name);
+      std::printf(
+          "  %s (order %d), tilt %.0f°: %zu points 1-25° above its plane, largest |E − "
+          "exact| / E = %.2e\n",
+          c.name, c.order, aim.tiltDeg, g.points.size(), worst);
+    }
+}
+
+}  // namespace
+}  // namespace penumbra
