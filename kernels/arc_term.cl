@@ -151,7 +151,7 @@ PN_DEFINE_DIFF_OF_PRODUCTS(float8, 8)
                       nz, em, &dpsi, &drop);                                                       \
     const PnArcShares##S shares = {lambert, dpsi, drop};                                           \
     return select(                                                                                 \
-        moment_term##S(pax, pay, paz, pbx, pby, pbz, kx, ky, kz, s, nx, ny, nz, &shares, em),      \
+        moment_term##S(pax, pay, paz, pbx, pby, pbz, kx, ky, kz, s, nx, ny, nz, &shares, em, 0),   \
         em->c[0] * lambert - drop, none);                                                          \
   }
 

@@ -182,7 +182,8 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
       cz = diff_of_products##S(ax, by, ay, bx);                                                \
     T s = sqrt(cx * cx + cy * cy + cz * cz);                                                   \
     T term = em->order >= 0                                                                    \
-                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, 0, em) \
+                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, 0, em, \
+                                  0)                                                           \
                  : -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s; \
     return select(term, (T)(0.0f), s <= 0.0f);                                                 \
   }

@@ -26,7 +26,7 @@ inline float8 edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, 
   float8 cz = ex * ay - ey * ax;
   float8 s = sqrt(cx * cx + cy * cy + cz * cz);
   if (em->order >= 0)
-    return select(moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, 0, em),
+    return select(moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, 0, em, 0),
                   (float8)(0.0f), s <= 0.0f);
   float8 theta = atan2(s, ax * bx + ay * by + az * bz);
   float8 term = theta * (nx * cx + ny * cy + nz * cz) / s;

@@ -28,28 +28,28 @@
  *
  * High powers (a narrow beam's nonnegative fit, order above PN_MOMENT_DIRECT_ORDER): an arc's F_k
  * and τ_k by the recurrences above do not shrink as g^k does over the region. τ_k holds the
- * triangle from w, and the forward recurrence of F_k grows as r^k (r = √(x² + y²), the largest g
- * on the arc's whole great circle) where the arc itself sees g <= g_max < r: each arc's part of a
- * high power is then of the order of c_k Θ however little of it the region sees, and its rounding
- * is many times E where the spill light dominates. Each arc's term is the same number written
- * about the azimuth ψ about w (Arvo's τ_k by the divergence theorem in ψ):
+ * triangle from w, and the forward recurrence of F_k grows as r^k (r = √(x² + y²), the largest g on
+ * the arc's whole great circle) where the arc itself sees g <= g_max < r: each arc's part of a high
+ * power is then of the order of c_k Θ however little of it the region sees, and its rounding is
+ * many times E where the spill light dominates. Each arc's term is the same number written about
+ * the azimuth ψ about w (Arvo's τ_k by the divergence theorem in ψ):
  *   k τ_{k−1} = Δψ − A_k,   A_k = ∫_arc g^k dψ = (w·m) Σ_{i>=0} F_{k+2i},
  * Δψ the arc's azimuth about w (the terms Δψ sum to 2π or 0 around the region), so that
  *   2 Σ_k c_k M_k = c_0 Θ (n·m) + 2 [(w·n) Δψ Σ_{k>=1} c_k/(k+2)
  *                                   + Σ_{j>=1} F_j ((n·m) c_j/(j+2) − (w·n)(w·m) W_j)],
- * W_j = Σ c_k/(k+2) over 1 <= k <= j of j's parity: every part now shrinks with g^j over the
- * arc, the Δψ part being Lambert's kind (one rounding of an arc's angle). The F_j are taken
- * backward from F = 0 beyond the order, F_{j−2} = (j F_j + [f^{j−1} f′]_0^Θ) / ((j − 1) r²),
- * which damps the start's error by (g_max / r)² a step, where the arc misses its circle's peak
- * by g_max <= PN_MOMENT_RATIO r (the bracket as x^{j−1} (expm1((j − 1) log1p((f(Θ) − x) / x))
- * f′(Θ) + f′(Θ) − y), without cancellation; exact every PN_MOMENT_EXACT_EVERY steps, stepped
- * down by 1/x and ((·) − (ρ − 1)) / ρ, ρ = f(Θ) / x, between); forward, as above, where the arc
- * holds the peak or nearly and r <= PN_MOMENT_RATIO. The sum over j is cut where that ratio (g_max
- * / r, or r, each at least g_max) to the power beyond the order is PN_MOMENT_CUT, at most
- * PN_MOMENT_MAX_TAIL powers beyond (the lanes' largest need: an arc far off the axis needs a few
- * dozen). Arcs near the axis (both ratios above PN_MOMENT_RATIO, where the beam dominates E) keep
- * the recurrences above. Each way gives the arc's own exact term, so the arcs of one region may mix
- * them. */
+ * W_j = Σ c_k/(k+2) over 1 <= k <= j of j's parity: every part now shrinks with g^j over the arc,
+ * the Δψ part being Lambert's kind (one rounding of an arc's angle). The F_j are taken backward
+ * from F = 0 beyond the order, F_{j−2} = (j F_j + [f^{j−1} f′]_0^Θ) / ((j − 1) r²), which damps the
+ * start's error by (g_max / r)² a step, where the arc misses its circle's peak by g_max <=
+ * PN_MOMENT_RATIO r (the bracket as x^{j−1} (expm1((j − 1) log1p((f(Θ) − x) / x)) f′(Θ) + f′(Θ) −
+ * y), without cancellation; exact every PN_MOMENT_EXACT_EVERY steps, stepped down by 1/x and ((·) −
+ * (ρ − 1)) / ρ, ρ = f(Θ) / x, between, which multiplies its error by 1/ρ a step: where ρ < 0.9,
+ * f(Θ)^{j−1} − x^{j−1} with each power stepped alone); forward, as above, where the arc holds the
+ * peak or nearly and r <= PN_MOMENT_RATIO. The sum over j is cut where that ratio (g_max / r, or r,
+ * each at least g_max) to the power beyond the order is PN_MOMENT_CUT, at most PN_MOMENT_MAX_TAIL
+ * powers beyond (the lanes' largest need: an arc far off the axis needs a few dozen). Arcs near the
+ * axis (both ratios above PN_MOMENT_RATIO, where the beam dominates E) keep the recurrences above.
+ * Each way gives the arc's own exact term, so the arcs of one region may mix them. */
 
 #include "prelude.cl"
 
@@ -111,11 +111,12 @@ typedef struct {
 /* The azimuth form of one arc's term (above) where it is the more accurate, else `direct`, the
  * term by the recurrences of F_k and τ_k. x, y, r2, f_end = f(Θ), slope_end = f′(Θ), delta =
  * f(Θ) − x and delta_slope = f′(Θ) − y as moment_term computes them; c = b × a; shares (or null)
- * as moment_term's. */
+ * and azimuth_lanes (or null) as moment_term's. */
 #define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                  \
   inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,             \
                            T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,          \
-                           T cx, T cy, T cz, const PnArcShares##S* shares, const PnEmission* em) {       \
+                           T cx, T cy, T cz, const PnArcShares##S* shares, const PnEmission* em,         \
+                           M* azimuth_lanes) {                                                           \
     const float wx = em->wx, wy = em->wy, wz = em->wz;                                                   \
     const int order = em->order;                                                                         \
     const float far_even = em->tail[order - (order & 1)],                                                \
@@ -125,6 +126,7 @@ typedef struct {
     M holds_peak = (y > 0.0f) & (slope_end < 0.0f);                                                      \
     M backward = !holds_peak & (g_max <= PN_MOMENT_RATIO * r) & (x > 0.0f) & (f_end > 0.0f);             \
     M forward = !backward & (r <= PN_MOMENT_RATIO);                                                      \
+    if (azimuth_lanes) *azimuth_lanes = backward | forward;                                              \
     if (!pn_any(backward | forward)) return direct;                                                      \
     /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,            \
      * both bounding g_max) to that power is PN_MOMENT_CUT. */                                           \
@@ -164,15 +166,25 @@ typedef struct {
       T inverse_r2 = 1.0f / r2;                                                                          \
       T log_ratio =                                                                                      \
           log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
-      T power = 0.0f, excess = 0.0f; /* x^{j−1}, (f(Θ)/x)^{j−1} − 1 */                            \
+      /* x^{j−1}, and f(Θ)^{j−1} − x^{j−1} = x^{j−1} ((f(Θ)/x)^{j−1} − 1) (`spread`), kept as the    \
+       * product (far down the tail x^{j−1} underflows where (f(Θ)/x)^{j−1} overflows; f(Θ)^{j−1}     \
+       * is then taken by pown, x^{j−1} below 1e-30 leaving no cancellation that matters). Stepped      \
+       * down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9 the        \
+       * difference of the two powers, each stepped alone, is taken instead (no cancellation that     \
+       * costs more than a factor 5 there). */                                                         \
+      T power = 0.0f, spread = 0.0f, power_end = 0.0f;                                                   \
       T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);          \
+      const M apart = log_ratio < -0.10536f; /* ρ < 0.9 */                                            \
+      const T inverse_end = 1.0f / f_end;                                                                \
       for (int j = last_behind; j >= 3; --j) {                                                           \
         const float jf = (float)j;                                                                       \
         if (((last_behind - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                    \
           power = pown(x, (M)(j - 1));                                                                   \
-          excess = expm1((jf - 1.0f) * log_ratio);                                                       \
+          power_end = pown(f_end, (M)(j - 1));                                                           \
+          spread = power * expm1((jf - 1.0f) * log_ratio);                                               \
+          spread = select(spread, power_end - power, (M)(!isfinite(spread)) | (M)(power < 1e-30f));      \
         }                                                                                                \
-        T bracket = power * (excess * slope_end + delta_slope);                                          \
+        T bracket = select(spread, power_end - power, apart) * slope_end + power * delta_slope;          \
         T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                       \
         const int i = j - 2;                                                                             \
         const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                               \
@@ -180,9 +192,10 @@ typedef struct {
         behind += f_j2 * (nm * ci - wnm * wi);                                                           \
         f_hi = f_lo;                                                                                     \
         f_lo = f_j2;                                                                                     \
+        /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ, times x^{j−2} */                              \
+        spread = (spread - power * ratio_less_1) * inverse_x * inverse_ratio;                            \
         power *= inverse_x; /* x^{j−2} */                                                              \
-        excess = (excess - ratio_less_1) *                                                               \
-                 inverse_ratio; /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ */          \
+        power_end *= inverse_end;                                                                        \
       }                                                                                                  \
       /* behind holds j − 2 = 1..last_behind − 2; the two highest powers, whose F start at 0, are    \
        * the cut-off's. */                                                                               \
@@ -198,11 +211,14 @@ PN_DEFINE_AZIMUTH_FORM(float8, int8, 8)
 /* 2 Σ_k c_k M_k over the arc a → b (vectors from P, any length), c = b × a computed to about a
  * rounding of itself by the caller, s = |c| > 0 (lanes with s <= 0 are the caller's to zero);
  * `shares`, where not null, the parts the caller takes relative to its contour's reference point
- * (c_0's part is then c_0 shares->lambert). One body for one point (T float, names ending in 1)
- * and eight lanes (float8, 8). */
-#define PN_DEFINE_MOMENT_TERM(T, S, Sum, add)                                                     \
+ * (c_0's part is then c_0 shares->lambert); `azimuth_lanes`, where not null, receives the lanes
+ * that took the azimuth form (none at orders up to PN_MOMENT_DIRECT_ORDER). One body for one point
+ * (T float, names ending in 1) and eight lanes (float8, 8). */
+#define PN_DEFINE_MOMENT_TERM(T, M, S, Sum, add)                                                  \
   inline T moment_term##S(T ax, T ay, T az, T bx, T by, T bz, T cx, T cy, T cz, T s, T nx, T ny,  \
-                          T nz, const PnArcShares##S* shares, const PnEmission* em) {             \
+                          T nz, const PnArcShares##S* shares, const PnEmission* em,               \
+                          M* azimuth_lanes) {                                                     \
+    if (azimuth_lanes) *azimuth_lanes = 0;                                                        \
     const float wx = em->wx, wy = em->wy, wz = em->wz;                                            \
     T la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);             \
     T ab = ax * bx + ay * by + az * bz;                                                           \
@@ -242,8 +258,8 @@ PN_DEFINE_AZIMUTH_FORM(float8, int8, 8)
     if (em->order <= PN_MOMENT_DIRECT_ORDER) return sum.s + sum.c;                                \
     T direct = shares ? (sum.s + sum.c) - shares->drop : sum.s + sum.c;                           \
     return azimuth_form##S(direct, theta, x, y, r2, f_end, slope_end, delta, delta_slope, nm, wm, \
-                           wn, ax, ay, az, bx, by, bz, cx, cy, cz, shares, em);                   \
+                           wn, ax, ay, az, bx, by, bz, cx, cy, cz, shares, em, azimuth_lanes);    \
   }
-PN_DEFINE_MOMENT_TERM(float, 1, PnSum, pn_sum_add)    /* one body for the scalar path */
-PN_DEFINE_MOMENT_TERM(float8, 8, PnSum8, pn_sum_add8) /* and for eight lanes */
+PN_DEFINE_MOMENT_TERM(float, int, 1, PnSum, pn_sum_add)     /* one body for the scalar path */
+PN_DEFINE_MOMENT_TERM(float8, int8, 8, PnSum8, pn_sum_add8) /* and for eight lanes */
 #undef PN_DEFINE_MOMENT_TERM

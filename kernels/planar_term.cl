@@ -21,9 +21,11 @@
  * 1/sin²e of E, e the elevation above the face's plane. Here the edges' Δψ sum to 2π times the
  * contour's winding about F, taken as that (planar_closing8); every other part carries its power
  * of h itself: A_p as the tail sum where h²/D² <= PN_PLANAR_TAIL_RATIO (in closed form for
- * uniform luminance), forward above it, where g is not small and nothing cancels much. h comes
- * from the double-float positions to a rounding of itself (planar_height8); the in-plane
- * coordinates need only a rounding of the distance. Eight lanes. */
+ * uniform luminance), forward above it, where g is not small and nothing cancels much. A narrow
+ * beam's powers above PN_MOMENT_DIRECT_ORDER keep the moment term's azimuth form, whose parts
+ * shrink with g^k over the arc, less its Δψ part, which is the same Δψ about F and joins the
+ * closing. h comes from the double-float positions to a rounding of itself (planar_height8); the
+ * in-plane coordinates need only a rounding of the distance. Eight lanes. */
 
 #include "luminance_moments.cl"
 
@@ -32,11 +34,10 @@
 #define PN_PLANAR_MAX_P (PN_MOMENT_DIRECT_ORDER + 2 + 2 * PN_PLANAR_TAIL)
 
 /* Whether the planar form serves a face: uniform luminance, or a polynomial about −N (a
- * luminaire's opening) of an order the direct recurrences take. */
+ * luminaire's opening). */
 inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
   if (em->order < 0) return true;
-  return em->order <= PN_MOMENT_DIRECT_ORDER &&
-         em->wx * face.plane.x + em->wy * face.plane.y + em->wz * face.plane.z < -0.9999995f;
+  return em->wx * face.plane.x + em->wy * face.plane.y + em->wz * face.plane.z < -0.9999995f;
 }
 
 /* The lanes that see a face near its plane: P's height above the plane below PN_PLANAR_SINE
@@ -126,7 +127,25 @@ inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by
   const float8 d_over_h = d / fmax(h, 1e-30f);
   const float8 j2 = h * theta / big_d;
   float8 term;
-  if (em->order <= 0) {
+  if (em->order > PN_MOMENT_DIRECT_ORDER) {
+    /* A narrow beam's powers (luminance_moments.cl's azimuth form): c_0 as uniform luminance
+     * below, the powers above 0 by the moment term with their Δψ part left to the closing (its
+     * azimuth about w = −N is Δψ about F). Where the moment term keeps its direct recurrences
+     * (an arc near the axis), their Δψ part is taken out here instead. */
+    const float8 ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;
+    const float8 num = omc * ad * len * (d2 - c * ta * tb);
+    const float8 den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;
+    const float8 a2 = select(psi - d_over_h * j2, copysign(atan2(num, den) + omc * theta, d), tail);
+    const float8 cx = ey * az - ez * ay, cy = ez * ax - ex * az, cz = ex * ay - ey * ax;
+    const float8 s = sqrt(cx * cx + cy * cy + cz * cz);
+    const PnArcShares8 none = {0.0f, 0.0f, 0.0f};
+    int8 azimuth = 0;
+    const float8 high =
+        moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, &none, em, &azimuth);
+    const float beyond = em->tail[em->order] + em->tail[em->order - 1]; /* Σ_{k>=1} c_k/(k+2) */
+    const float8 high_rest = select(high + 2.0f * nn * psi * beyond, high, azimuth);
+    term = -em->c[0] * (nm * j2 - nn * a2) + select(high_rest, (float8)(0.0f), s <= 0.0f);
+  } else if (em->order <= 0) {
     /* Uniform luminance: A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d, c = |d| / D. Where h²/D² is
      * small, as sgn d (atan(u) − c atan(c u)) between the ends (u = τ/|d|), written without
      * cancellation: atan of the difference of atan(u) − atan(c u) at both ends, plus (1 − c) θ,
