@@ -40,10 +40,15 @@ inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
   return em->wx * face.plane.x + em->wy * face.plane.y + em->wz * face.plane.z < -0.9999995f;
 }
 
-/* The lanes that see a face near its plane: P's height above the plane below PN_PLANAR_SINE
- * times its distance from vertex 0 (x, y, z from P). Lambert's terms there lose as 1/sin²e
- * (above); above it they keep E to a few roundings, as the planar form does, at less
- * cost. */
+/* The lanes that see a face near its plane: P's height above the plane below a sine times its
+ * distance from vertex 0 (x, y, z from P). Lambert's terms there lose as 1/sin²e (above); higher
+ * they keep E within the kernel's 1e-5 as the planar form does, at a third of its cost per edge:
+ * up to 20° for uniform luminance (PN_PLANAR_SINE_UNIFORM), whose terms are Lambert's alone, and
+ * 30° for a polynomial (PN_PLANAR_SINE), whose higher powers' terms lose more (measured by
+ * tests/near_plane_test.cpp: at 20-30° with Lambert's terms, up to 8e-6 of E uniform and 2.0e-5
+ * for a power 9). The planar form at 20-30° costs a work plane under ceiling panels a third more
+ * kernel time. */
+#define PN_PLANAR_SINE_UNIFORM 0.35f
 #define PN_PLANAR_SINE 0.5f
 inline int8 planar_lanes8(const Points8* pts, PnSourceFace face, const PnEmission* em, float8 x,
                           float8 y, float8 z) {
@@ -51,7 +56,8 @@ inline int8 planar_lanes8(const Points8* pts, PnSourceFace face, const PnEmissio
   /* From vertex 0's offset, as every other choice of form: a lane's E does not depend on the
    * scene's origin (the positions' hi/lo split), nor on the lanes beside it. */
   const float8 h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);
-  return h * h < PN_PLANAR_SINE * PN_PLANAR_SINE * (x * x + y * y + z * z);
+  const float sine = em->order <= 0 ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;
+  return h * h < sine * sine * (x * x + y * y + z * z);
 }
 
 /* What the planar form needs of a face per lane: P's height h above the face's plane, n·N, the
