@@ -168,7 +168,7 @@ typedef struct {
           log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
       /* x^{j−1}, and f(Θ)^{j−1} − x^{j−1} = x^{j−1} ((f(Θ)/x)^{j−1} − 1) (`spread`), kept as the    \
        * product (far down the tail x^{j−1} underflows where (f(Θ)/x)^{j−1} overflows; f(Θ)^{j−1}     \
-       * is then taken by pown, x^{j−1} below 1e-30 leaving no cancellation that matters). Stepped      \
+       * is then taken by pown, x^{j−1} below FLT_MIN leaving no cancellation that matters). Stepped    \
        * down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9 the        \
        * difference of the two powers, each stepped alone, is taken instead (no cancellation that     \
        * costs more than a factor 5 there). */                                                         \
@@ -180,9 +180,16 @@ typedef struct {
         const float jf = (float)j;                                                                       \
         if (((last_behind - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                    \
           power = pown(x, (M)(j - 1));                                                                   \
-          power_end = pown(f_end, (M)(j - 1));                                                           \
           spread = power * expm1((jf - 1.0f) * log_ratio);                                               \
-          spread = select(spread, power_end - power, (M)(!isfinite(spread)) | (M)(power < 1e-30f));      \
+          power_end = power + spread;                                                                    \
+          const M lost = (M)(!isfinite(spread)) | (M)(power < FLT_MIN);                                  \
+          if (pn_any(lost)) {                                                                            \
+            /* f(Θ)^{j−1}: below x^{j−1}, under FLT_MIN, where f(Θ) <= x: 0 there, at no pown */       \
+            const T exact_end = pn_any(lost & (M)(log_ratio > 0.0f)) ? pown(f_end, (M)(j - 1))          \
+                                                                      : (T)(0.0f);                       \
+            power_end = select(power_end, exact_end, lost);                                              \
+            spread = select(spread, exact_end - power, lost);                                            \
+          }                                                                                              \
         }                                                                                                \
         T bracket = select(spread, power_end - power, apart) * slope_end + power * delta_slope;          \
         T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                       \
