@@ -468,19 +468,22 @@ const KernelPath kKernelPaths[] = {
     {"plain", EngineOptions{false, true, false}},
 };
 
-// Whether `point` sees `luminaire`'s opening clearly: every vertex above the point's horizon and
-// the point in front of the opening's plane, each by more than kClearSine (the sine of the angle
-// from the plane). Where the horizon cuts or grazes the opening, or the opening is seen edge-on,
-// the contour's terms cancel to a small E and float rounding of each term, the Lambertian
-// source's as much as the polynomial's, is a larger part of it (the kernel's Lambertian `rect`
-// errs there by up to 1.8e-4 of E unoccluded against the exact reference).
+// Whether `point` sees `luminaire`'s opening clearly: every vertex more than kClearSine above the
+// point's horizon (the sine of the angle from it), and the point in front of the opening's plane
+// by more than kClearPlaneSine. Low on the point's horizon the contour's terms cancel to a small
+// E and float rounding of each term, the Lambertian source's as much as the polynomial's, is a
+// larger part of it (the kernel's Lambertian `rect` errs there by up to 1.8e-4 of E unoccluded
+// against the exact reference). Near the opening's plane the kernel takes its terms in that
+// plane (kernels/planar_term.cl); only a point within rounding of the plane itself, where E is
+// 0 but for the rounding, is left out.
 constexpr double kClearSine = 0.1;
+constexpr double kClearPlaneSine = 0.01;
 bool seenClearly(const Luminaire& luminaire, const SamplePoint& point) {
   const ConvexPolygon polygon = placedOpening(*luminaire.opening, luminaire.instances.front());
   for (const Vec3& v : polygon.vertices()) {
     const Vec3 d = v - point.position;
     if (point.normal.dot(d) <= kClearSine * d.norm()) return false;
-    if (polygon.normal().dot(-d) <= kClearSine * d.norm()) return false;
+    if (polygon.normal().dot(-d) <= kClearPlaneSine * d.norm()) return false;
   }
   return true;
 }
