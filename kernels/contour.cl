@@ -175,17 +175,16 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * parallel; the ends of a piece may be a crossing direction and a point of any length, so the
  * cross product is made accurate instead (diff_of_products). A face of polynomial luminance takes
  * the moment term (luminance_moments.cl) on the same cross product, negated to b × a. */
-#define PN_DEFINE_PIECE_TERM(T, S)                                                             \
-  inline T piece_term##S(T ax, T ay, T az, T bx, T by, T bz, T nx, T ny, T nz,                 \
-                         const PnEmission* em) {                                               \
-    T cx = diff_of_products##S(ay, bz, az, by), cy = diff_of_products##S(az, bx, ax, bz),      \
-      cz = diff_of_products##S(ax, by, ay, bx);                                                \
-    T s = sqrt(cx * cx + cy * cy + cz * cz);                                                   \
-    T term = em->order >= 0                                                                    \
-                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, 0, em, \
-                                  0)                                                           \
-                 : -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s; \
-    return select(term, (T)(0.0f), s <= 0.0f);                                                 \
+#define PN_DEFINE_PIECE_TERM(T, S)                                                                \
+  inline T piece_term##S(T ax, T ay, T az, T bx, T by, T bz, T nx, T ny, T nz,                    \
+                         const PnEmission* em) {                                                  \
+    T cx = diff_of_products##S(ay, bz, az, by), cy = diff_of_products##S(az, bx, ax, bz),         \
+      cz = diff_of_products##S(ax, by, ay, bx);                                                   \
+    T s = sqrt(cx * cx + cy * cy + cz * cz);                                                      \
+    T term = em->order >= 0                                                                       \
+                 ? moment_term##S(ax, ay, az, bx, by, bz, -cx, -cy, -cz, s, nx, ny, nz, 0, em, 0) \
+                 : -atan2(s, ax * bx + ay * by + az * bz) * (nx * cx + ny * cy + nz * cz) / s;    \
+    return select(term, (T)(0.0f), s <= 0.0f);                                                    \
   }
 
 /* A face small against its distance from P (lambert.cl, PN_SMALL_FACE) has pieces whose terms

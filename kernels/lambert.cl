@@ -256,8 +256,8 @@ inline float8 horizon_end8(HorizonSum8* h, float8 nx, float8 ny, float8 nz) {
   const HorizonChord8* c = &h->chord;
   int8 cut = chord_cut8(c);
   if (pn_any(cut)) /* most lanes see whole faces: skip the chord's atan2 when none is cut */
-    horizon_add8(h, c->exit_x, c->exit_y, c->exit_z, c->entry_x, c->entry_y, c->entry_z, nx, ny,
-                 nz, cut);
+    horizon_add8(h, c->exit_x, c->exit_y, c->exit_z, c->entry_x, c->entry_y, c->entry_z, nx, ny, nz,
+                 cut);
   if (!h->planar) return h->sum.s + h->sum.c;
   /* An unoccluded face's E is never negative; its rounding near the face's plane may be. */
   return fmax((h->sum.s + h->sum.c) + planar_closing8(h->planar, h->em), 0.0f);

@@ -112,104 +112,104 @@ typedef struct {
  * term by the recurrences of F_k and τ_k. x, y, r2, f_end = f(Θ), slope_end = f′(Θ), delta =
  * f(Θ) − x and delta_slope = f′(Θ) − y as moment_term computes them; c = b × a; shares (or null)
  * and azimuth_lanes (or null) as moment_term's. */
-#define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                  \
-  inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,             \
-                           T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,          \
-                           T cx, T cy, T cz, const PnArcShares##S* shares, const PnEmission* em,         \
-                           M* azimuth_lanes) {                                                           \
-    const float wx = em->wx, wy = em->wy, wz = em->wz;                                                   \
-    const int order = em->order;                                                                         \
-    const float far_even = em->tail[order - (order & 1)],                                                \
-                far_odd = em->tail[order - 1 + (order & 1)];                                             \
-    const float beyond = em->tail[order] + em->tail[order - 1]; /* Σ_{k>=1} c_k/(k+2) */                \
-    T r = sqrt(r2), g_max = fmax(x, f_end);                                                              \
-    M holds_peak = (y > 0.0f) & (slope_end < 0.0f);                                                      \
-    M backward = !holds_peak & (g_max <= PN_MOMENT_RATIO * r) & (x > 0.0f) & (f_end > 0.0f);             \
-    M forward = !backward & (r <= PN_MOMENT_RATIO);                                                      \
-    if (azimuth_lanes) *azimuth_lanes = backward | forward;                                              \
-    if (!pn_any(backward | forward)) return direct;                                                      \
-    /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,            \
-     * both bounding g_max) to that power is PN_MOMENT_CUT. */                                           \
-    /* Each sweep runs as far as its lanes' largest need. */                                             \
-    T need_ahead = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(r, 1e-3f)), forward);                 \
-    T need_behind = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(g_max / r, 1e-3f)), backward);       \
-    const int last_ahead =                                                                               \
-        order + 2 + (int)fmin(pn_lane_max(need_ahead), (float)PN_MOMENT_MAX_TAIL);                       \
-    const int last_behind =                                                                              \
-        order + 2 + (int)fmin(pn_lane_max(need_behind), (float)PN_MOMENT_MAX_TAIL);                      \
-    /* Δψ, the azimuth from a to b about w: the angle from w × a to w × b, signed by w·(b × a). */ \
-    T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                         \
-    T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                         \
-    T dpsi = shares ? shares->dpsi                                                                       \
-                    : atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);             \
-    T wnm = wn * wm;                                                                                     \
-    /* Forward: F_j for j = 1..last_ahead, as moment_term. */                                            \
-    T ahead = 0.0f;                                                                                      \
-    if (pn_any(forward)) {                                                                               \
-      T f_prev = theta, f_prev2 = 0.0f, d = 0.0f, xp = 1.0f;                                             \
-      for (int j = 1; j <= last_ahead; ++j) {                                                            \
-        const float jf = (float)j;                                                                       \
-        T f_j = ((jf - 1.0f) * r2 * f_prev2 - (d * slope_end + xp * delta_slope)) / jf;                  \
-        const float cj = j <= order ? em->c[j] / (jf + 2.0f) : 0.0f;                                     \
-        const float wj = j <= order ? em->tail[j] : ((j & 1) ? far_odd : far_even);                      \
-        ahead += f_j * (nm * cj - wnm * wj);                                                             \
-        d = f_end * d + xp * delta;                                                                      \
-        xp *= x;                                                                                         \
-        f_prev2 = f_prev;                                                                                \
-        f_prev = f_j;                                                                                    \
-      }                                                                                                  \
-    }                                                                                                    \
-    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last_behind and the one below. */      \
-    T behind = 0.0f;                                                                                     \
-    if (pn_any(backward)) {                                                                              \
-      T f_hi = 0.0f, f_lo = 0.0f; /* F_j, F_{j−1} */                                                   \
-      T inverse_r2 = 1.0f / r2;                                                                          \
-      T log_ratio =                                                                                      \
-          log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */     \
-      /* x^{j−1}, and f(Θ)^{j−1} − x^{j−1} = x^{j−1} ((f(Θ)/x)^{j−1} − 1) (`spread`), kept as the    \
-       * product (far down the tail x^{j−1} underflows where (f(Θ)/x)^{j−1} overflows; f(Θ)^{j−1}     \
-       * is then taken by pown, x^{j−1} below FLT_MIN leaving no cancellation that matters). Stepped    \
-       * down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9 the        \
-       * difference of the two powers, each stepped alone, is taken instead (no cancellation that     \
-       * costs more than a factor 5 there). */                                                         \
-      T power = 0.0f, spread = 0.0f, power_end = 0.0f;                                                   \
-      T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);          \
-      const M apart = log_ratio < -0.10536f; /* ρ < 0.9 */                                            \
-      const T inverse_end = 1.0f / f_end;                                                                \
-      for (int j = last_behind; j >= 3; --j) {                                                           \
-        const float jf = (float)j;                                                                       \
-        if (((last_behind - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                    \
-          power = pown(x, (M)(j - 1));                                                                   \
-          spread = power * expm1((jf - 1.0f) * log_ratio);                                               \
-          power_end = power + spread;                                                                    \
-          const M lost = (M)(!isfinite(spread)) | (M)(power < FLT_MIN);                                  \
-          if (pn_any(lost)) {                                                                            \
-            /* f(Θ)^{j−1}: below x^{j−1}, under FLT_MIN, where f(Θ) <= x: 0 there, at no pown */       \
-            const T exact_end = pn_any(lost & (M)(log_ratio > 0.0f)) ? pown(f_end, (M)(j - 1))          \
-                                                                      : (T)(0.0f);                       \
-            power_end = select(power_end, exact_end, lost);                                              \
-            spread = select(spread, exact_end - power, lost);                                            \
-          }                                                                                              \
-        }                                                                                                \
-        T bracket = select(spread, power_end - power, apart) * slope_end + power * delta_slope;          \
-        T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                       \
-        const int i = j - 2;                                                                             \
-        const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                               \
-        const float wi = i <= order ? em->tail[i] : ((i & 1) ? far_odd : far_even);                      \
-        behind += f_j2 * (nm * ci - wnm * wi);                                                           \
-        f_hi = f_lo;                                                                                     \
-        f_lo = f_j2;                                                                                     \
-        /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ, times x^{j−2} */                              \
-        spread = (spread - power * ratio_less_1) * inverse_x * inverse_ratio;                            \
-        power *= inverse_x; /* x^{j−2} */                                                              \
-        power_end *= inverse_end;                                                                        \
-      }                                                                                                  \
-      /* behind holds j − 2 = 1..last_behind − 2; the two highest powers, whose F start at 0, are    \
-       * the cut-off's. */                                                                               \
-    }                                                                                                    \
-    T rest = 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));                              \
-    T azimuth = shares ? em->c[0] * shares->lambert + rest : em->c[0] * theta * nm + rest;               \
-    return select(direct, azimuth, backward | forward);                                                  \
+#define PN_DEFINE_AZIMUTH_FORM(T, M, S)                                                                           \
+  inline T azimuth_form##S(T direct, T theta, T x, T y, T r2, T f_end, T slope_end, T delta,                      \
+                           T delta_slope, T nm, T wm, T wn, T ax, T ay, T az, T bx, T by, T bz,                   \
+                           T cx, T cy, T cz, const PnArcShares##S* shares, const PnEmission* em,                  \
+                           M* azimuth_lanes) {                                                                    \
+    const float wx = em->wx, wy = em->wy, wz = em->wz;                                                            \
+    const int order = em->order;                                                                                  \
+    const float far_even = em->tail[order - (order & 1)],                                                         \
+                far_odd = em->tail[order - 1 + (order & 1)];                                                      \
+    const float beyond = em->tail[order] + em->tail[order - 1]; /* Σ_{k>=1} c_k/(k+2) */                         \
+    T r = sqrt(r2), g_max = fmax(x, f_end);                                                                       \
+    M holds_peak = (y > 0.0f) & (slope_end < 0.0f);                                                               \
+    M backward = !holds_peak & (g_max <= PN_MOMENT_RATIO * r) & (x > 0.0f) & (f_end > 0.0f);                      \
+    M forward = !backward & (r <= PN_MOMENT_RATIO);                                                               \
+    if (azimuth_lanes) *azimuth_lanes = backward | forward;                                                       \
+    if (!pn_any(backward | forward)) return direct;                                                               \
+    /* The powers beyond the order each lane needs: its ratio (g_max / r backward, r forward,                     \
+     * both bounding g_max) to that power is PN_MOMENT_CUT. */                                                    \
+    /* Each sweep runs as far as its lanes' largest need. */                                                      \
+    T need_ahead = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(r, 1e-3f)), forward);                          \
+    T need_behind = select((T)(0.0f), log(PN_MOMENT_CUT) / log(fmax(g_max / r, 1e-3f)), backward);                \
+    const int last_ahead =                                                                                        \
+        order + 2 + (int)fmin(pn_lane_max(need_ahead), (float)PN_MOMENT_MAX_TAIL);                                \
+    const int last_behind =                                                                                       \
+        order + 2 + (int)fmin(pn_lane_max(need_behind), (float)PN_MOMENT_MAX_TAIL);                               \
+    /* Δψ, the azimuth from a to b about w: the angle from w × a to w × b, signed by w·(b × a). */          \
+    T pax = wy * az - wz * ay, pay = wz * ax - wx * az, paz = wx * ay - wy * ax;                                  \
+    T pbx = wy * bz - wz * by, pby = wz * bx - wx * bz, pbz = wx * by - wy * bx;                                  \
+    T dpsi = shares ? shares->dpsi                                                                                \
+                    : atan2(wx * cx + wy * cy + wz * cz, pax * pbx + pay * pby + paz * pbz);                      \
+    T wnm = wn * wm;                                                                                              \
+    /* Forward: F_j for j = 1..last_ahead, as moment_term. */                                                     \
+    T ahead = 0.0f;                                                                                               \
+    if (pn_any(forward)) {                                                                                        \
+      T f_prev = theta, f_prev2 = 0.0f, d = 0.0f, xp = 1.0f;                                                      \
+      for (int j = 1; j <= last_ahead; ++j) {                                                                     \
+        const float jf = (float)j;                                                                                \
+        T f_j = ((jf - 1.0f) * r2 * f_prev2 - (d * slope_end + xp * delta_slope)) / jf;                           \
+        const float cj = j <= order ? em->c[j] / (jf + 2.0f) : 0.0f;                                              \
+        const float wj = j <= order ? em->tail[j] : ((j & 1) ? far_odd : far_even);                               \
+        ahead += f_j * (nm * cj - wnm * wj);                                                                      \
+        d = f_end * d + xp * delta;                                                                               \
+        xp *= x;                                                                                                  \
+        f_prev2 = f_prev;                                                                                         \
+        f_prev = f_j;                                                                                             \
+      }                                                                                                           \
+    }                                                                                                             \
+    /* Backward: F_{j−2} from F_j, both parities, from F = 0 at last_behind and the one below. */               \
+    T behind = 0.0f;                                                                                              \
+    if (pn_any(backward)) {                                                                                       \
+      T f_hi = 0.0f, f_lo = 0.0f; /* F_j, F_{j−1} */                                                            \
+      T inverse_r2 = 1.0f / r2;                                                                                   \
+      T log_ratio =                                                                                               \
+          log1p(delta / x); /* f(Θ)^{j−1} − x^{j−1} = x^{j−1} expm1((j − 1) log_ratio) */              \
+      /* x^{j−1}, and f(Θ)^{j−1} − x^{j−1} = x^{j−1} ((f(Θ)/x)^{j−1} − 1) (`spread`), kept as the \
+       * product (far down the tail x^{j−1} underflows where (f(Θ)/x)^{j−1} overflows; f(Θ)^{j−1}         \
+       * is then taken by pown, x^{j−1} below FLT_MIN leaving no cancellation that matters).                    \
+       * Stepped down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9                        \
+       * the difference of the two powers, each stepped alone, is taken instead (no cancellation                              \
+       * that costs more than a factor 5 there). */                                                                            \
+      T power = 0.0f, spread = 0.0f, power_end = 0.0f;                                                            \
+      T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);                   \
+      const M apart = log_ratio < -0.10536f; /* ρ < 0.9 */                                                       \
+      const T inverse_end = 1.0f / f_end;                                                                         \
+      for (int j = last_behind; j >= 3; --j) {                                                                    \
+        const float jf = (float)j;                                                                                \
+        if (((last_behind - j) & (PN_MOMENT_EXACT_EVERY - 1)) == 0) {                                             \
+          power = pown(x, (M)(j - 1));                                                                            \
+          spread = power * expm1((jf - 1.0f) * log_ratio);                                                        \
+          power_end = power + spread;                                                                             \
+          const M lost = (M)(!isfinite(spread)) | (M)(power < FLT_MIN);                                           \
+          if (pn_any(lost)) {                                                                                     \
+            /* f(Θ)^{j−1}: below x^{j−1}, under FLT_MIN, where f(Θ) <= x: 0 there, at no pown */            \
+            const T exact_end =                                                                                   \
+                pn_any(lost & (M)(log_ratio > 0.0f)) ? pown(f_end, (M)(j - 1)) : (T)(0.0f);                       \
+            power_end = select(power_end, exact_end, lost);                                                       \
+            spread = select(spread, exact_end - power, lost);                                                     \
+          }                                                                                                       \
+        }                                                                                                         \
+        T bracket = select(spread, power_end - power, apart) * slope_end + power * delta_slope;                   \
+        T f_j2 = (jf * f_hi + bracket) * inverse_r2 / (jf - 1.0f); /* F_{j−2} */                                \
+        const int i = j - 2;                                                                                      \
+        const float ci = i <= order ? em->c[i] / ((float)i + 2.0f) : 0.0f;                                        \
+        const float wi = i <= order ? em->tail[i] : ((i & 1) ? far_odd : far_even);                               \
+        behind += f_j2 * (nm * ci - wnm * wi);                                                                    \
+        f_hi = f_lo;                                                                                              \
+        f_lo = f_j2;                                                                                              \
+        /* ρ^{j−2} − 1 = (ρ^{j−1} − 1 − (ρ − 1)) / ρ, times x^{j−2} */                          \
+        spread = (spread - power * ratio_less_1) * inverse_x * inverse_ratio;                                     \
+        power *= inverse_x; /* x^{j−2} */                                                                       \
+        power_end *= inverse_end;                                                                                 \
+      }                                                                                                           \
+      /* behind holds j − 2 = 1..last_behind − 2; the two highest powers, whose F start at 0, are             \
+       * the cut-off's. */                                                                                        \
+    }                                                                                                             \
+    T rest = 2.0f * (wn * dpsi * beyond + select(ahead, behind, backward));                                       \
+    T azimuth = shares ? em->c[0] * shares->lambert + rest : em->c[0] * theta * nm + rest;                        \
+    return select(direct, azimuth, backward | forward);                                                           \
   }
 PN_DEFINE_AZIMUTH_FORM(float, int, 1)
 PN_DEFINE_AZIMUTH_FORM(float8, int8, 8)

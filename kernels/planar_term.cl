@@ -75,13 +75,13 @@ inline float8 planar_height8(const Points8* pts, PnSourceFace face, const PnScen
   const float3 n = face.plane.xyz;
   PnSum8 sum = {0.0f, 0.0f};
   float8 rest = 0.0f;
-#define PN_PLANAR_COORDINATE(c, pc, lc)                                 \
-  {                                                                     \
-    float8 s = v.hi.c - pts->pc, bp = s - v.hi.c;                       \
+#define PN_PLANAR_COORDINATE(c, pc, lc)                                      \
+  {                                                                          \
+    float8 s = v.hi.c - pts->pc, bp = s - v.hi.c;                            \
     float8 err = (v.hi.c - (s - bp)) + (-pts->pc - bp) + (v.lo.c - pts->lc); \
-    float8 prod = n.c * s;                                              \
-    pn_sum_add8(&sum, prod);                                            \
-    rest += fma((float8)(n.c), s, -prod) + n.c * err;                   \
+    float8 prod = n.c * s;                                                   \
+    pn_sum_add8(&sum, prod);                                                 \
+    rest += fma((float8)(n.c), s, -prod) + n.c * err;                        \
   }
   PN_PLANAR_COORDINATE(x, px, lx)
   PN_PLANAR_COORDINATE(y, py, ly)
