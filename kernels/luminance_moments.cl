@@ -169,9 +169,9 @@ typedef struct {
       /* x^{j−1}, and f(Θ)^{j−1} − x^{j−1} = x^{j−1} ((f(Θ)/x)^{j−1} − 1) (`spread`), kept as the \
        * product (far down the tail x^{j−1} underflows where (f(Θ)/x)^{j−1} overflows; f(Θ)^{j−1}         \
        * is then taken by pown, x^{j−1} below FLT_MIN leaving no cancellation that matters).                    \
-       * Stepped down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9                        \
-       * the difference of the two powers, each stepped alone, is taken instead (no cancellation                              \
-       * that costs more than a factor 5 there). */                                                                            \
+       * Stepped down, ρ^{j−1} − 1 multiplies its error by 1/ρ a step (ρ = f(Θ)/x): where ρ < 0.9        \
+       * the difference of the two powers, each stepped alone, is taken instead (no cancellation                  \
+       * that costs more than a factor 5 there). */                                                               \
       T power = 0.0f, spread = 0.0f, power_end = 0.0f;                                                            \
       T inverse_x = 1.0f / x, ratio_less_1 = expm1(log_ratio), inverse_ratio = exp(-log_ratio);                   \
       const M apart = log_ratio < -0.10536f; /* ρ < 0.9 */                                                       \

@@ -50,8 +50,7 @@ inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
  * kernel time. */
 #define PN_PLANAR_SINE_UNIFORM 0.35f
 #define PN_PLANAR_SINE 0.5f
-inline int8 planar_lanes8(const Points8* pts, PnSourceFace face, const PnEmission* em, float8 x,
-                          float8 y, float8 z) {
+inline int8 planar_lanes8(PnSourceFace face, const PnEmission* em, float8 x, float8 y, float8 z) {
   if (!planar_emission(face, em)) return 0;
   /* From vertex 0's offset, as every other choice of form: a lane's E does not depend on the
    * scene's origin (the positions' hi/lo split), nor on the lanes beside it. */
@@ -133,29 +132,11 @@ inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by
   const float8 d_over_h = d / fmax(h, 1e-30f);
   const float8 j2 = h * theta / big_d;
   float8 term;
-  if (em->order > PN_MOMENT_DIRECT_ORDER) {
-    /* A narrow beam's powers (luminance_moments.cl's azimuth form): c_0 as uniform luminance
-     * below, the powers above 0 by the moment term with their Δψ part left to the closing (its
-     * azimuth about w = −N is Δψ about F). Where the moment term keeps its direct recurrences
-     * (an arc near the axis), their Δψ part is taken out here instead. */
-    const float8 ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;
-    const float8 num = omc * ad * len * (d2 - c * ta * tb);
-    const float8 den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;
-    const float8 a2 = select(psi - d_over_h * j2, copysign(atan2(num, den) + omc * theta, d), tail);
-    const float8 cx = ey * az - ez * ay, cy = ez * ax - ex * az, cz = ex * ay - ey * ax;
-    const float8 s = sqrt(cx * cx + cy * cy + cz * cz);
-    const PnArcShares8 none = {0.0f, 0.0f, 0.0f};
-    int8 azimuth = 0;
-    const float8 high =
-        moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, &none, em, &azimuth);
-    const float beyond = em->tail[em->order] + em->tail[em->order - 1]; /* Σ_{k>=1} c_k/(k+2) */
-    const float8 high_rest = select(high + 2.0f * nn * psi * beyond, high, azimuth);
-    term = -em->c[0] * (nm * j2 - nn * a2) + select(high_rest, (float8)(0.0f), s <= 0.0f);
-  } else if (em->order <= 0) {
-    /* Uniform luminance: A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d, c = |d| / D. Where h²/D² is
-     * small, as sgn d (atan(u) − c atan(c u)) between the ends (u = τ/|d|), written without
-     * cancellation: atan of the difference of atan(u) − atan(c u) at both ends, plus (1 − c) θ,
-     * 1 − c = h² / (D (D + |d|)). */
+  if (em->order <= 0 || em->order > PN_MOMENT_DIRECT_ORDER) {
+    /* Uniform luminance (and a narrow beam's c_0): A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d,
+     * c = |d| / D. Where h²/D² is small, as sgn d (atan(u) − c atan(c u)) between the ends
+     * (u = τ/|d|), written without cancellation: atan of the difference of atan(u) − atan(c u)
+     * at both ends, plus (1 − c) θ, 1 − c = h² / (D (D + |d|)). */
     const float8 ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;
     const float8 num = omc * ad * len * (d2 - c * ta * tb);
     const float8 den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;
@@ -163,6 +144,21 @@ inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by
     const float8 a2 = select(psi - d_over_h * j2, a2_tail, tail);
     const float c0 = em->order < 0 ? 1.0f : em->c[0];
     term = -c0 * (nm * j2 - nn * a2);
+    if (em->order > PN_MOMENT_DIRECT_ORDER) {
+      /* A narrow beam's powers above 0 (luminance_moments.cl's azimuth form) by the moment term
+       * with their Δψ part left to the closing (its azimuth about w = −N is Δψ about F). Where
+       * the moment term keeps its direct recurrences (an arc near the axis), their Δψ part is
+       * taken out here instead. */
+      const float8 cx = ey * az - ez * ay, cy = ez * ax - ex * az, cz = ex * ay - ey * ax;
+      const float8 s = sqrt(cx * cx + cy * cy + cz * cz);
+      const PnArcShares8 none = {0.0f, 0.0f, 0.0f};
+      int8 azimuth = 0;
+      const float8 high =
+          moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, &none, em, &azimuth);
+      const float beyond = em->tail[em->order] + em->tail[em->order - 1]; /* Σ_{k>=1} c_k/(k+2) */
+      const float8 high_rest = select(high + 2.0f * nn * psi * beyond, high, azimuth);
+      term += select(high_rest, (float8)(0.0f), s <= 0.0f);
+    }
   } else {
     /* J_p, p = 2 .. last (the tail's powers where some lane takes it). */
     const int order = em->order;
