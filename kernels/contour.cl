@@ -136,6 +136,39 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     return !(clip & n0 & n1) & (*t1 > *t0);                                                \
   }
 
+/* The tie rule reads an occluder's contour edge that lies within the tolerance of an S' edge's
+ * side plane m as lying in it: the edge is dropped, and the S' edge's piece ends where the planes
+ * of the occluder's edges beside it cross m. Those edges must then end there too, so the shared
+ * vertex a (from P) is moved into m, along u, the direction in the face's plane across the S'
+ * edge: a − (m·a)/(m·u) u, which moves the vertex's image on the face onto the S' edge's line and
+ * leaves the rest of the visible region as it is. Where m is nearly the face's plane (m·u below
+ * PN_SNAP_ACROSS_MIN: P within 0.06° of the plane) it moves along m instead. Left apart, the
+ * visible contour stays open by up to the tolerance (1e-5 of the distance), which costs up to
+ * 1e-5 rad of Lambert's terms: 21-76 % of E where they cancel several hundredfold (a panel seen
+ * nearly edge-on past a bezel's lip 0.17 mm inside its edge: tests/near_tie_test.cpp). */
+#define PN_SNAP_ACROSS_MIN 1e-3f
+#define PN_DEFINE_SNAP_END(T, M, S)                                                               \
+  inline void snap_end##S(T mx, T my, T mz, T ux, T uy, T uz, M use, T* ax, T* ay, T* az) {       \
+    T across = mx * ux + my * uy + mz * uz;                                                       \
+    M along_m = fabs(across) < PN_SNAP_ACROSS_MIN;                                                \
+    ux = select(ux, mx, along_m);                                                                 \
+    uy = select(uy, my, along_m);                                                                 \
+    uz = select(uz, mz, along_m);                                                                 \
+    T k = (mx * *ax + my * *ay + mz * *az) / select(across, (T)(1.0f), along_m);                  \
+    *ax = select(*ax, *ax - k * ux, use);                                                         \
+    *ay = select(*ay, *ay - k * uy, use);                                                         \
+    *az = select(*az, *az - k * uz, use);                                                         \
+  }                                                                                               \
+  /* u for the S' edge c → d (from P) of a face with unit normal n: unit(n × (d − c)). */    \
+  inline void edge_across##S(float3 n, T cx, T cy, T cz, T dx, T dy, T dz, T* ux, T* uy, T* uz) { \
+    T ex = dx - cx, ey = dy - cy, ez = dz - cz;                                                   \
+    T x = n.y * ez - n.z * ey, y = n.z * ex - n.x * ez, z = n.x * ey - n.y * ex;                  \
+    T inverse = rsqrt(fmax(x * x + y * y + z * z, (T)(1e-30f)));                                  \
+    *ux = x * inverse;                                                                            \
+    *uy = y * inverse;                                                                            \
+    *uz = z * inverse;                                                                            \
+  }
+
 /* Where a visible piece ends because another region's side plane crosses the edge, the boundary
  * turns onto that region's edge, whose piece starts at the same direction: the line where the
  * two side planes meet. Both edges take it as the cross product of the two unit normals in one
@@ -250,6 +283,7 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
   PN_DEFINE_EDGE_POINT(T, S)             \
   PN_DEFINE_IN_PLANE(T, M, S)            \
   PN_DEFINE_EDGE_IN_PLANE(T, M, S)       \
+  PN_DEFINE_SNAP_END(T, M, S)            \
   PN_DEFINE_KEEPS_TIED_EDGE(T, M, S)     \
   PN_DEFINE_CLIP_INTERVAL_ID(T, M, S)    \
   PN_DEFINE_CROSSING(T, M, S)            \
@@ -262,6 +296,7 @@ PN_DEFINE_CONTOUR_TWINS(float8, int8, 8) /* and for eight lanes */
 #undef PN_DEFINE_EDGE_POINT
 #undef PN_DEFINE_IN_PLANE
 #undef PN_DEFINE_EDGE_IN_PLANE
+#undef PN_DEFINE_SNAP_END
 #undef PN_DEFINE_KEEPS_TIED_EDGE
 #undef PN_DEFINE_CLIP_INTERVAL_ID
 #undef PN_DEFINE_CROSSING

@@ -251,6 +251,105 @@ void drop_hidden8(Contours8* cs, const Points8* pts, const PnSceneTables* tables
   }
 }
 
+/* The lanes where contour edge e (side plane ep) is tied to side plane i of S' (the tie rule, as
+ * integrate_holes8 reads it), and, in *ux, *uy, *uz, u for that S' edge (snap_end8). */
+int8 tied_to_source8(const SourcePolygon8* s, int i, const ContourEdge8* e, const EdgePlane8* ep,
+                     float8 la, float8 lb, float8* ux, float8* uy, float8* uz) {
+  const int m = s->m;
+  const EdgePlane8* side = &s->side[i];
+  int8 use = e->on & ep->on & ((side->mx != 0.0f) | (side->my != 0.0f) | (side->mz != 0.0f));
+  if (i == m) use &= s->cut;
+  if (!pn_any(use)) return use;
+  const float8 f0 = -(side->mx * e->ax + side->my * e->ay + side->mz * e->az);
+  const float8 f1 = -(side->mx * e->bx + side->my * e->by + side->mz * e->bz);
+  int8 tied = use & in_plane8(f0, f1, la, lb);
+  if (!pn_any(tied)) return tied;
+  float8 cx, cy, cz, dx, dy, dz;
+  if (i == m) {
+    cx = s->chord.exit_x, cy = s->chord.exit_y, cz = s->chord.exit_z;
+    dx = s->chord.entry_x, dy = s->chord.entry_y, dz = s->chord.entry_z;
+  } else {
+    const int j = i + 1 == m ? 0 : i + 1;
+    cx = s->x[i], cy = s->y[i], cz = s->z[i], dx = s->x[j], dy = s->y[j], dz = s->z[j];
+  }
+  tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, cx, cy, cz, dx, dy, dz);
+  edge_across8(s->form.plane.xyz, cx, cy, cz, dx, dy, dz, ux, uy, uz);
+  return tied;
+}
+
+/* Moves the vertices of the contour edges tied to an S' edge into that edge's side plane, at
+ * every contour edge that ends there, per lane (snap_end8, contour.cl; penumbra_scalar.cl's
+ * snap_tied_vertices), and takes their side planes anew. */
+#define PN_VEC_TIED_ENDS 8
+void snap_tied_vertices8(Contours8* cs, const SourcePolygon8* s) {
+  float8 vx[PN_VEC_TIED_ENDS], vy[PN_VEC_TIED_ENDS], vz[PN_VEC_TIED_ENDS];
+  float8 ux[PN_VEC_TIED_ENDS], uy[PN_VEC_TIED_ENDS], uz[PN_VEC_TIED_ENDS];
+  int8 lanes[PN_VEC_TIED_ENDS];
+  int plane[PN_VEC_TIED_ENDS];
+  int count = 0;
+  const int edges = cs->first_edge[cs->count];
+  const int m = s->m;
+  int8 plane_use[PN_VEC_SOURCE + 1];
+  for (int i = 0; i <= m; ++i) {
+    const EdgePlane8* side = &s->side[i];
+    plane_use[i] = (side->mx != 0.0f) | (side->my != 0.0f) | (side->mz != 0.0f);
+    if (i == m) plane_use[i] &= s->cut;
+  }
+  /* Most edges have no end near an S' side plane: a test of squares, a little wider than
+   * in_plane8's, before the tie rule's own. */
+  const float near2 = (1.01f * PN_EPS_REL) * (1.01f * PN_EPS_REL);
+  for (int k = 0; k < edges; ++k) {
+    const ContourEdge8* e = &cs->edge[k];
+    const EdgePlane8* ep = &cs->plane[k];
+    const int8 on = e->on & ep->on;
+    if (!pn_any(on)) continue;
+    const float8 la2 = e->ax * e->ax + e->ay * e->ay + e->az * e->az;
+    const float8 lb2 = e->bx * e->bx + e->by * e->by + e->bz * e->bz;
+    for (int i = 0; i <= m && count + 2 <= PN_VEC_TIED_ENDS; ++i) {
+      const EdgePlane8* side = &s->side[i];
+      const float8 f0 = side->mx * e->ax + side->my * e->ay + side->mz * e->az;
+      int8 near = on & plane_use[i] & (f0 * f0 <= near2 * la2);
+      if (!pn_any(near)) continue;
+      const float8 f1 = side->mx * e->bx + side->my * e->by + side->mz * e->bz;
+      if (!pn_any(near & (f1 * f1 <= near2 * lb2))) continue;
+      float8 x, y, z;
+      const int8 tied = tied_to_source8(s, i, e, ep, sqrt(la2), sqrt(lb2), &x, &y, &z);
+      if (!pn_any(tied)) continue;
+      for (int end = 0; end < 2; ++end, ++count) {
+        vx[count] = end ? e->bx : e->ax;
+        vy[count] = end ? e->by : e->ay;
+        vz[count] = end ? e->bz : e->az;
+        ux[count] = x;
+        uy[count] = y;
+        uz[count] = z;
+        lanes[count] = tied;
+        plane[count] = i;
+      }
+    }
+  }
+  for (int k = 0; k < edges && count > 0; ++k) {
+    ContourEdge8* e = &cs->edge[k];
+    const float8 ax = e->ax, ay = e->ay, az = e->az, bx = e->bx, by = e->by, bz = e->bz;
+    int8 moved = 0;
+    for (int r = 0; r < count; ++r) {
+      const int8 at_a = e->on & lanes[r] & (ax == vx[r]) & (ay == vy[r]) & (az == vz[r]);
+      const int8 at_b = e->on & lanes[r] & (bx == vx[r]) & (by == vy[r]) & (bz == vz[r]);
+      if (!pn_any(at_a | at_b)) continue;
+      const EdgePlane8* side = &s->side[plane[r]];
+      snap_end8(side->mx, side->my, side->mz, ux[r], uy[r], uz[r], at_a, &e->ax, &e->ay, &e->az);
+      snap_end8(side->mx, side->my, side->mz, ux[r], uy[r], uz[r], at_b, &e->bx, &e->by, &e->bz);
+      moved |= at_a | at_b;
+    }
+    if (!pn_any(moved)) continue;
+    EdgePlane8* ep = &cs->plane[k];
+    float8 mx, my, mz;
+    side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &mx, &my, &mz);
+    ep->mx = select(ep->mx, mx, moved);
+    ep->my = select(ep->my, my, moved);
+    ep->mz = select(ep->mz, mz, moved);
+  }
+}
+
 /* Boundary part (a): the source's edges above the horizon, and the chord. Their ends are vertices
  * or on the horizon, where the edge and the chord compute the same point. */
 void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
@@ -281,7 +380,7 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
 void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
-                      PnSum8* sum) {
+                      PnSum8* sum, int8* tied_lanes) {
   const int m = s->m;
   for (int u = 0; u < cs->count; ++u)
     for (int k = cs->first_edge[u]; k < cs->first_edge[u + 1]; ++k) {
@@ -315,6 +414,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
           }
         }
         on &= ~tied;
+        *tied_lanes |= tied;
         on &= clip_interval_id8(f0, f1, use & ~tied, i, &t0, &t1, &id0, &id1);
       }
       if (!pn_any(on)) continue;
@@ -347,7 +447,19 @@ float8 penumbra_face8(const Points8* pts, int8 asked, const FaceView8* fv,
   lanes &= ~(*rest | *scalar);
   drop_hidden8(&cs, pts, tables, eps_length);
   PnSum8 sum = {0.0f, 0.0f};
+  int8 tied = 0;
   integrate_source8(&s, pts, lanes, &cs, &sum);
-  integrate_holes8(&s, pts, lanes, &cs, &sum);
+  integrate_holes8(&s, pts, lanes, &cs, &sum, &tied);
+  if (pn_any(tied)) {
+    /* An occluder's edge tied to an S' edge (rare): its vertices into that edge's side plane,
+     * and the lanes that have one integrated again. */
+    snap_tied_vertices8(&cs, &s);
+    PnSum8 again = {0.0f, 0.0f};
+    int8 still = 0;
+    integrate_source8(&s, pts, tied, &cs, &again);
+    integrate_holes8(&s, pts, tied, &cs, &again, &still);
+    sum.s = select(sum.s, again.s, tied);
+    sum.c = select(sum.c, again.c, tied);
+  }
   return select((float8)(0.0f), fmax(sum.s + sum.c, 0.0f), lanes);
 }

@@ -29,6 +29,7 @@ typedef struct {
   int active_count;
   PnEmission emission; /* how the face emits (luminance_moments.cl) */
   PnPieceForm1 form;   /* how its pieces are integrated (contour.cl), reading `emission` */
+  bool tie_seen;       /* an occluder's edge was tied to an S' edge (contour_sum) */
 } PenumbraState;
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
@@ -154,7 +155,7 @@ inline float3 plane_of(const PenumbraState* st, int id) {
  * oa and ob are its ends' offsets from the face's centre when `exact` (source_offset), else
  * unused. */
 void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int owner, int self,
-                       float3 n, const PenumbraState* st, int* error, PnSum* acc) {
+                       float3 n, PenumbraState* st, int* error, PnSum* acc) {
   const float3 m_self = plane_of(st, self);
   if (no_plane(m_self)) return; /* its line passes through P: no solid angle */
   float lo[PN_MAX_VISIBLE_PIECES], hi[PN_MAX_VISIBLE_PIECES];
@@ -176,8 +177,10 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
        * counted. */
       const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
       if (in_plane1(f0, f1, la, lb) &&
-          edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z))
+          edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z)) {
+        st->tie_seen = true;
         return;
+      }
       if (!clip_interval_id1(f0, f1, 1, i, &t0, &t1, &lo_id[0], &hi_id[0])) return;
     }
     lo[0] = t0;
@@ -261,11 +264,64 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
   }
 }
 
-/* E / (L/2) of the visible part of S' (st->source) past the active occluders. */
-float region_sum(PenumbraState* st, float3 n, int* error) {
-  for (int i = 0; i < st->source_count; ++i)
-    st->source_side[i] =
-        side_normal(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1]);
+/* Whether the occluder edge (a, b), of lengths la and lb and side normal m_self, is tied to S'
+ * edge i (the tie rule): it lies in that edge's side plane, and that edge in its own. */
+inline bool tied_to_source(const PenumbraState* st, int i, float3 a, float3 b, float la, float lb,
+                           float3 m_self) {
+  const float3 m = st->source_side[i];
+  const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
+  return in_plane1(-pn_dot(m, a), -pn_dot(m, b), la, lb) &&
+         edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z);
+}
+
+/* Moves the vertices of the contour edges tied to an S' edge into that edge's side plane, at
+ * every contour edge that ends there (snap_end, contour.cl), and takes their side planes anew. */
+#define PN_MAX_TIED_ENDS 8
+void snap_tied_vertices(PenumbraState* st) {
+  float3 vertex[PN_MAX_TIED_ENDS];
+  int plane[PN_MAX_TIED_ENDS];
+  int count = 0;
+  const int edges = st->first_contour[st->active_count];
+  for (int e = 0; e < edges; ++e) {
+    const float3 a = st->contour_a[e], b = st->contour_b[e], m_self = st->contour_side[e];
+    if (no_plane(m_self)) continue;
+    const float la = sqrt(pn_dot(a, a)), lb = sqrt(pn_dot(b, b));
+    for (int i = 0; i < st->source_count && count + 2 <= PN_MAX_TIED_ENDS; ++i) {
+      if (no_plane(st->source_side[i]) || !tied_to_source(st, i, a, b, la, lb, m_self)) continue;
+      vertex[count] = a;
+      plane[count++] = i;
+      vertex[count] = b;
+      plane[count++] = i;
+    }
+  }
+  for (int e = 0; e < edges && count > 0; ++e) {
+    const float3 a0 = st->contour_a[e], b0 = st->contour_b[e];
+    float ax = a0.x, ay = a0.y, az = a0.z, bx = b0.x, by = b0.y, bz = b0.z;
+    bool moved = false;
+    for (int k = 0; k < count; ++k) {
+      const int i = plane[k], j = i + 1 == st->source_count ? 0 : i + 1;
+      const float3 m = st->source_side[i], c = st->source[i], d = st->source[j];
+      const float3 v = vertex[k];
+      const int at_a = a0.x == v.x && a0.y == v.y && a0.z == v.z;
+      const int at_b = b0.x == v.x && b0.y == v.y && b0.z == v.z;
+      if (!at_a && !at_b) continue;
+      float ux, uy, uz;
+      edge_across1(st->form.plane.xyz, c.x, c.y, c.z, d.x, d.y, d.z, &ux, &uy, &uz);
+      snap_end1(m.x, m.y, m.z, ux, uy, uz, at_a, &ax, &ay, &az);
+      snap_end1(m.x, m.y, m.z, ux, uy, uz, at_b, &bx, &by, &bz);
+      moved = true;
+    }
+    if (!moved) continue;
+    st->contour_a[e] = (float3)(ax, ay, az);
+    st->contour_b[e] = (float3)(bx, by, bz);
+    st->contour_side[e] = side_normal(st->contour_a[e], st->contour_b[e]);
+  }
+}
+
+/* The sum over the visible contour; sets st->tie_seen where an occluder's edge is tied to an S'
+ * edge. */
+float contour_sum(PenumbraState* st, float3 n, int* error) {
+  st->tie_seen = false;
   PnSum sum = {0.0f, 0.0f};
   for (int i = 0; i < st->source_count; ++i) {
     const int j = i + 1 == st->source_count ? 0 : i + 1;
@@ -277,6 +333,19 @@ float region_sum(PenumbraState* st, float3 n, int* error) {
       visible_edge_term(st->contour_a[e], st->contour_b[e], 0.0f, 0.0f, false, u, PN_ID_CONTOUR + e,
                         n, st, error, &sum);
   return sum.s + sum.c;
+}
+
+/* E / (L/2) of the visible part of S' (st->source) past the active occluders. Where an occluder's
+ * edge is tied to an S' edge (rare), its vertices are moved into that edge's side plane and the
+ * sum taken again. */
+float region_sum(PenumbraState* st, float3 n, int* error) {
+  for (int i = 0; i < st->source_count; ++i)
+    st->source_side[i] =
+        side_normal(st->source[i], st->source[i + 1 == st->source_count ? 0 : i + 1]);
+  const float sum = contour_sum(st, n, error);
+  if (!st->tie_seen) return sum;
+  snap_tied_vertices(st);
+  return contour_sum(st, n, error);
 }
 
 /* S' minus the wedges of the solids P lies on the edge or corner of (contact_faces), as disjoint
