@@ -84,11 +84,13 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
   }
 
 /* Whether the edge (a, b), of lengths la and lb, lies in a plane through P with unit normal m,
- * from f0 = m·a and f1 = m·b: the test reads as the sine of the angle between the plane and
- * each end's direction. */
+ * from f0 = m·a and f1 = m·b: the sine of the angle between the plane and each end's direction
+ * at most PN_TIE_REL (Tolerance::kKernelTie, 1e-6: a few times float's rounding of a side plane,
+ * and a tenth of the kernel's general tolerance, so that what the tie rule keeps or drops is a
+ * band that thin). */
 #define PN_DEFINE_IN_PLANE(T, M, S)                                       \
   inline M in_plane##S(T f0, T f1, T la, T lb) {                          \
-    return (fabs(f0) <= PN_EPS_REL * la) & (fabs(f1) <= PN_EPS_REL * lb); \
+    return (fabs(f0) <= PN_TIE_REL * la) & (fabs(f1) <= PN_TIE_REL * lb); \
   }
 
 /* Whether the edge (a, b) lies in the plane through P with unit normal m (in_plane of its ends,
@@ -136,16 +138,16 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     return !(clip & n0 & n1) & (*t1 > *t0);                                                \
   }
 
-/* The tie rule reads an occluder's contour edge that lies within the tolerance of an S' edge's
- * side plane m as lying in it: the edge is dropped, and the S' edge's piece ends where the planes
- * of the occluder's edges beside it cross m. Those edges must then end there too, so the shared
+/* The tie rule reads an occluder's contour edge within the tie tolerance of an S' edge's side
+ * plane m as lying in it: the edge is dropped, and the S' edge's piece ends where the planes of
+ * the occluder's edges beside it cross m. Those edges must then end there too, so the shared
  * vertex a (from P) is moved into m, along u, the direction in the face's plane across the S'
  * edge: a − (m·a)/(m·u) u, which moves the vertex's image on the face onto the S' edge's line and
  * leaves the rest of the visible region as it is. Where m is nearly the face's plane (m·u below
  * PN_SNAP_ACROSS_MIN: P within 0.06° of the plane) it moves along m instead. Left apart, the
- * visible contour stays open by up to the tolerance (1e-5 of the distance), which costs up to
- * 1e-5 rad of Lambert's terms: 21-76 % of E where they cancel several hundredfold (a panel seen
- * nearly edge-on past a bezel's lip 0.17 mm inside its edge: tests/near_tie_test.cpp). */
+ * visible contour stays open by up to the tie tolerance (1e-6 of the distance), which costs up
+ * to 1e-6 rad of Lambert's terms: several % of E where they cancel several hundredfold (a panel
+ * seen nearly edge-on past a bezel's lip just inside its edge: tests/near_tie_test.cpp). */
 #define PN_SNAP_ACROSS_MIN 1e-3f
 #define PN_DEFINE_SNAP_END(T, M, S)                                                               \
   inline void snap_end##S(T mx, T my, T mz, T ux, T uy, T uz, M use, T* ax, T* ay, T* az) {       \

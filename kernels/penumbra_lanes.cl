@@ -297,7 +297,7 @@ void snap_tied_vertices8(Contours8* cs, const SourcePolygon8* s) {
   }
   /* Most edges have no end near an S' side plane: a test of squares, a little wider than
    * in_plane8's, before the tie rule's own. */
-  const float near2 = (1.01f * PN_EPS_REL) * (1.01f * PN_EPS_REL);
+  const float near2 = (1.01f * PN_TIE_REL) * (1.01f * PN_TIE_REL);
   for (int k = 0; k < edges; ++k) {
     const ContourEdge8* e = &cs->edge[k];
     const EdgePlane8* ep = &cs->plane[k];

@@ -134,13 +134,14 @@ TEST(Occlusion, SourceEdgeAndOccluderEdgeWithinTheTieToleranceOfOnePlane) {
   // A wall element (0.25 × 0.15 m on the wall y = 0) seen from the floor past a desk's front
   // bottom edge: both edges run along x, so one plane through a floor point holds both at
   // y = lineY. The source is whole for y ≤ lineY and loses a sliver along its top edge beyond.
-  // For a few µm past lineY the two edges' planes are within the tie tolerance of each other,
+  // For about a µm past lineY the two edges' planes are within the tie tolerance of each other,
   // yet each edge's ends lie at a different sine from the other's plane (their distances from
   // the planes' common line over their lengths differ): the tie rule must take the pair as tied
   // at both edges or at neither, or the contour is left open (the top edge covered, the desk's
-  // edge dropped as tied: 13 times the element's E at 14 µm past lineY). Every 0.5 µm over
-  // 60 µm, on the eight-lane, scalar and plain paths, against the exact reference, and against
-  // the closed form (two perpendicular rectangles) where the source is whole.
+  // edge dropped as tied: 13 times the element's E 14 µm past lineY with a tie tolerance of
+  // 1e-5, 1.4 µm with 1e-6). Every 0.05 µm over 6 µm, on the eight-lane, scalar and plain paths,
+  // against the exact reference, and against the closed form (two perpendicular rectangles)
+  // where the source is whole.
   const double x0 = 3.75, x1 = 4.0, z0 = 2.7, z1 = 2.85, luminance = 1000.0;
   const double deskY = 1.2, deskZ = 0.72, px = 3.786;
   Scene scene;
@@ -150,7 +151,7 @@ TEST(Occlusion, SourceEdgeAndOccluderEdgeWithinTheTieToleranceOfOnePlane) {
   const double lineY = z1 * deskY / (z1 - deskZ);
   std::vector<SamplePoint> points;
   for (int k = -20; k <= 100; ++k)
-    points.push_back({Vec3(px, lineY + 0.5e-6 * k, 0.0), Vec3::UnitZ(), -1});
+    points.push_back({Vec3(px, lineY + 0.05e-6 * k, 0.0), Vec3::UnitZ(), -1});
   const std::vector<double> exact = exactIlluminance(scene, points)[0];
   for (const bool lanes : {true, false})
     for (const bool culling : {true, false}) {
@@ -166,11 +167,14 @@ TEST(Occlusion, SourceEdgeAndOccluderEdgeWithinTheTieToleranceOfOnePlane) {
             std::numbers::pi * luminance *
             (perpendicularFactor(x1 - px, y, z1) - perpendicularFactor(x1 - px, y, z0) +
              perpendicularFactor(px - x0, y, z1) - perpendicularFactor(px - x0, y, z0));
-        // Within the tie band the kernel keeps or drops a sliver at most kKernelRelative wide
-        // (in sine) along the top edge: at most that over the source's angular height of E,
-        // twice for the cosines across it (4.3e-4 here; the kernel's float error elsewhere).
+        // Within the tie band the kernel keeps or drops a sliver at most kKernelTie wide (in
+        // sine) along the top edge: at most that over the source's angular height of E, twice
+        // for the cosines across it (4.3e-5 here), and no less than the kernel's float error
+        // elsewhere (kKernelRelative of E).
         const double height = std::atan(z1 / y) - std::atan(z0 / y);
-        const double bound = 2.0 * Tolerance::kKernelRelative / height * whole;
+        const double bound =
+            std::max(2.0 * Tolerance::kKernelTie / height, double(Tolerance::kKernelRelative)) *
+            whole;
         EXPECT_NEAR(e[i], exact[i], bound) << "y - lineY = " << (y - lineY) * 1e6 << " µm, culling "
                                            << culling << ", lanes " << lanes;
         if (y <= lineY) {

@@ -217,8 +217,9 @@ PnPosition toPosition(const Vec3& x, const Vec3& origin) {
 }
 
 std::string illuminanceBuildOptions() {
-  return fmt::format("-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f -DPN_EPS_LENGTH_REL={:.9g}f",
-                     Tolerance::kKernelRelative, Tolerance::kKernelLengthRelative);
+  return fmt::format(
+      "-cl-std=CL1.2 -DPN_EPS_REL={:.9g}f -DPN_EPS_LENGTH_REL={:.9g}f -DPN_TIE_REL={:.9g}f",
+      Tolerance::kKernelRelative, Tolerance::kKernelLengthRelative, Tolerance::kKernelTie);
 }
 
 std::vector<std::string> illuminanceArgumentNames() {

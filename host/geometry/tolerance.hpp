@@ -15,6 +15,14 @@ struct Tolerance {
   // Kernels are float (2^-24 = 6e-8 relative); directions built from differences and cross
   // products lose about two digits, so "on the boundary" means within 1e-5 of a unit quantity.
   static constexpr float kKernelRelative = 1e-5f;
+  // The tie rule's tolerance (kernels/contour.cl, docs/method.md "The tie rule"): an edge lies in
+  // another's side plane where both its ends are within 1e-6 (sine) of it. A side plane through
+  // P is good to a few 1e-7 (vectors from P's double-float position, one cross product,
+  // normalised), so edges that coincide in the scene stay tied; a real gap wider than 1e-6 is
+  // integrated as it is. Whatever the rule keeps or drops lies within that band, so it is
+  // tighter than kKernelRelative: a bezel's lip seen from 15-25° below a panel's plane errs by
+  // 2-4e-5 of E at 1e-6, against 1e-4 at 1e-5.
+  static constexpr float kKernelTie = 1e-6f;
   // Input validation (planarity, convexity, "on its wall") is about what a person typed: 1e-6 of
   // the scene size (a 10 m room: 10 µm).
   static constexpr double kRelativeInput = 1e-6;
