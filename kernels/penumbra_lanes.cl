@@ -251,28 +251,44 @@ void drop_hidden8(Contours8* cs, const Points8* pts, const PnSceneTables* tables
   }
 }
 
-/* The lanes where contour edge e (side plane ep) is tied to side plane i of S' (the tie rule, as
- * integrate_holes8 reads it), and, in *ux, *uy, *uz, u for that S' edge (snap_end8). */
-int8 tied_to_source8(const SourcePolygon8* s, int i, const ContourEdge8* e, const EdgePlane8* ep,
-                     float8 la, float8 lb, float8* ux, float8* uy, float8* uz) {
-  const int m = s->m;
-  const EdgePlane8* side = &s->side[i];
-  int8 use = e->on & ep->on & ((side->mx != 0.0f) | (side->my != 0.0f) | (side->mz != 0.0f));
-  if (i == m) use &= s->cut;
-  if (!pn_any(use)) return use;
-  const float8 f0 = -(side->mx * e->ax + side->my * e->ay + side->mz * e->az);
-  const float8 f1 = -(side->mx * e->bx + side->my * e->by + side->mz * e->bz);
+/* The ends of S' edge i: the horizon chord's (exit, entry) when i == m. */
+void source_edge8(const SourcePolygon8* s, int i, float8* cx, float8* cy, float8* cz, float8* dx,
+                  float8* dy, float8* dz) {
+  if (i == s->m) {
+    *cx = s->chord.exit_x, *cy = s->chord.exit_y, *cz = s->chord.exit_z;
+    *dx = s->chord.entry_x, *dy = s->chord.entry_y, *dz = s->chord.entry_z;
+  } else {
+    const int j = i + 1 == s->m ? 0 : i + 1;
+    *cx = s->x[i], *cy = s->y[i], *cz = s->z[i], *dx = s->x[j], *dy = s->y[j], *dz = s->z[j];
+  }
+}
+
+/* The lanes of `use` where a contour edge (side plane ep, lengths la and lb, ends at -f0 and -f1
+ * along S' side plane i's normal) is tied to S' edge i: it lies in that edge's side plane, and
+ * that edge in its own (the tie rule, contour.cl). */
+int8 tied_to_side8(const SourcePolygon8* s, int i, const EdgePlane8* ep, int8 use, float8 f0,
+                   float8 f1, float8 la, float8 lb) {
   int8 tied = use & in_plane8(f0, f1, la, lb);
   if (!pn_any(tied)) return tied;
   float8 cx, cy, cz, dx, dy, dz;
-  if (i == m) {
-    cx = s->chord.exit_x, cy = s->chord.exit_y, cz = s->chord.exit_z;
-    dx = s->chord.entry_x, dy = s->chord.entry_y, dz = s->chord.entry_z;
-  } else {
-    const int j = i + 1 == m ? 0 : i + 1;
-    cx = s->x[i], cy = s->y[i], cz = s->z[i], dx = s->x[j], dy = s->y[j], dz = s->z[j];
-  }
-  tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, cx, cy, cz, dx, dy, dz);
+  source_edge8(s, i, &cx, &cy, &cz, &dx, &dy, &dz);
+  return tied & edge_in_plane8(ep->mx, ep->my, ep->mz, cx, cy, cz, dx, dy, dz);
+}
+
+/* The lanes where contour edge e (side plane ep) is tied to side plane i of S' (tied_to_side8,
+ * as integrate_holes8 reads it), and, in *ux, *uy, *uz, u for that S' edge (snap_end8). */
+int8 tied_to_source8(const SourcePolygon8* s, int i, const ContourEdge8* e, const EdgePlane8* ep,
+                     float8 la, float8 lb, float8* ux, float8* uy, float8* uz) {
+  const EdgePlane8* side = &s->side[i];
+  int8 use = e->on & ep->on & ((side->mx != 0.0f) | (side->my != 0.0f) | (side->mz != 0.0f));
+  if (i == s->m) use &= s->cut;
+  if (!pn_any(use)) return use;
+  const float8 f0 = -(side->mx * e->ax + side->my * e->ay + side->mz * e->az);
+  const float8 f1 = -(side->mx * e->bx + side->my * e->by + side->mz * e->bz);
+  const int8 tied = tied_to_side8(s, i, ep, use, f0, f1, la, lb);
+  if (!pn_any(tied)) return tied;
+  float8 cx, cy, cz, dx, dy, dz;
+  source_edge8(s, i, &cx, &cy, &cz, &dx, &dy, &dz);
   edge_across8(s->form.plane.xyz, cx, cy, cz, dx, dy, dz, ux, uy, uz);
   return tied;
 }
@@ -399,20 +415,9 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
         if (!pn_any(use)) continue;
         float8 f0 = -(mx * e->ax + my * e->ay + mz * e->az);
         float8 f1 = -(mx * e->bx + my * e->by + mz * e->bz);
-        /* In a side plane of S' whose edge lies in this edge's plane (edge_in_plane8): the
+        /* In a side plane of S' whose edge lies in this edge's plane (tied_to_side8): the
          * source keeps it, or the visible region is empty there. */
-        int8 tied = use & in_plane8(f0, f1, la, lb);
-        if (pn_any(tied)) {
-          const HorizonChord8* c = &s->chord;
-          if (i == m)
-            tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, c->exit_x, c->exit_y, c->exit_z,
-                                   c->entry_x, c->entry_y, c->entry_z);
-          else {
-            const int j = i + 1 == m ? 0 : i + 1;
-            tied &= edge_in_plane8(ep->mx, ep->my, ep->mz, s->x[i], s->y[i], s->z[i], s->x[j],
-                                   s->y[j], s->z[j]);
-          }
-        }
+        const int8 tied = tied_to_side8(s, i, ep, use, f0, f1, la, lb);
         on &= ~tied;
         *tied_lanes |= tied;
         on &= clip_interval_id8(f0, f1, use & ~tied, i, &t0, &t1, &id0, &id1);

@@ -150,6 +150,16 @@ inline float3 plane_of(const PenumbraState* st, int id) {
   return id < PN_ID_CONTOUR ? st->source_side[id] : st->contour_side[id - PN_ID_CONTOUR];
 }
 
+/* Whether an occluder edge of side normal m_self, lengths la and lb, whose ends lie at -f0 and -f1
+ * along S' side plane i's normal, is tied to S' edge i (the tie rule, contour.cl): it lies in
+ * that edge's side plane, and that edge in its own. */
+inline bool tied_to_side(const PenumbraState* st, int i, float f0, float f1, float la, float lb,
+                         float3 m_self) {
+  const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
+  return in_plane1(f0, f1, la, lb) &&
+         edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z);
+}
+
 /* Integral over the visible parts of one boundary edge owned by region `owner` (-1 = source),
  * whose side plane has id `self` (its unit normal is plane_of(st, self)). Where the face is small,
  * oa and ob are its ends' offsets from the face's centre when `exact` (source_offset), else
@@ -175,9 +185,7 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
       /* In a boundary plane of S' whose edge lies in this edge's plane: same visible side → the
        * source (lower index) keeps it; opposite → dropped. Either way this occluder edge is not
        * counted. */
-      const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
-      if (in_plane1(f0, f1, la, lb) &&
-          edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z)) {
+      if (tied_to_side(st, i, f0, f1, la, lb, m_self)) {
         st->tie_seen = true;
         return;
       }
@@ -264,16 +272,6 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
   }
 }
 
-/* Whether the occluder edge (a, b), of lengths la and lb and side normal m_self, is tied to S'
- * edge i (the tie rule): it lies in that edge's side plane, and that edge in its own. */
-inline bool tied_to_source(const PenumbraState* st, int i, float3 a, float3 b, float la, float lb,
-                           float3 m_self) {
-  const float3 m = st->source_side[i];
-  const float3 c = st->source[i], d = st->source[i + 1 == st->source_count ? 0 : i + 1];
-  return in_plane1(-pn_dot(m, a), -pn_dot(m, b), la, lb) &&
-         edge_in_plane1(m_self.x, m_self.y, m_self.z, c.x, c.y, c.z, d.x, d.y, d.z);
-}
-
 /* Moves the vertices of the contour edges tied to an S' edge into that edge's side plane, at
  * every contour edge that ends there (snap_end, contour.cl), and takes their side planes anew. */
 #define PN_MAX_TIED_ENDS 8
@@ -287,7 +285,9 @@ void snap_tied_vertices(PenumbraState* st) {
     if (no_plane(m_self)) continue;
     const float la = sqrt(pn_dot(a, a)), lb = sqrt(pn_dot(b, b));
     for (int i = 0; i < st->source_count && count + 2 <= PN_MAX_TIED_ENDS; ++i) {
-      if (no_plane(st->source_side[i]) || !tied_to_source(st, i, a, b, la, lb, m_self)) continue;
+      const float3 m = st->source_side[i];
+      if (no_plane(m) || !tied_to_side(st, i, -pn_dot(m, a), -pn_dot(m, b), la, lb, m_self))
+        continue;
       vertex[count] = a;
       plane[count++] = i;
       vertex[count] = b;
