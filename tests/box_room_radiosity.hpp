@@ -80,6 +80,8 @@ class BoxRoomReference {
         {V3(s.x(), 0, 0), V3(0, s.y(), 0), V3(0, 0, s.z()), V3(-1, 0, 0)},
     }};
     // Positions in half patch steps along each axis (s/2n), exact integers on the patch grid.
+    using Steps = std::array<int, 3>;
+    std::vector<Steps> centreSteps, cornerSteps;
     const auto steps = [&](const V3& v) {
       Steps h;
       for (int k = 0; k < 3; ++k) h[k] = static_cast<int>(std::lround(2.0 * n * v[k] / s[k]));
@@ -96,8 +98,8 @@ class BoxRoomReference {
           const BoxRoomPatch patch{{a, a + du, a + du + dv, a + dv}, a + 0.5 * (du + dv), face[3]};
           if (inHole(patch)) continue;
           patches_.push_back(patch);
-          centreSteps_.push_back(steps(patch.centre));
-          cornerSteps_.push_back(steps(a));
+          centreSteps.push_back(steps(patch.centre));
+          cornerSteps.push_back(steps(a));
         }
     }
     faceBegin[faces.size()] = patches_.size();
@@ -121,7 +123,7 @@ class BoxRoomReference {
             std::size_t at = 0;
             for (int k = 0; k < 3; ++k)
               at = at * span +
-                   static_cast<std::size_t>(centreSteps_[i][k] - cornerSteps_[j][k] + 2 * n);
+                   static_cast<std::size_t>(centreSteps[i][k] - cornerSteps[j][k] + 2 * n);
             double& transfer = byOffset[at];
             if (std::isnan(transfer))
               transfer =
@@ -187,10 +189,8 @@ class BoxRoomReference {
     return false;
   }
 
-  using Steps = std::array<int, 3>;
   BoxRoomLighting lighting_;
   std::vector<BoxRoomPatch> patches_;
-  std::vector<Steps> centreSteps_, cornerSteps_;  // half patch steps (the constructor's steps)
   Eigen::VectorXd luminance_;
 };
 
