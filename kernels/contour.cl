@@ -244,40 +244,68 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * direction of the other ends, a rounding of the vectors from P each (docs/method.md, the
  * precision note). */
 #define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end goes to the sphere of radius |C| */
-#define PN_DEFINE_PIECE_FORM(T, M, S)                                                              \
-  typedef struct {                                                                                 \
-    const PnEmission* em; /* how the face emits */                                                 \
-    PnCentre##S centre;   /* its reference point, in the lanes of `small` */                       \
-    float4 plane;         /* the face's plane (unit normal N in xyz) */                            \
-    T height;             /* N·C */                                                               \
-    M small;              /* lanes where the face is small against its distance */                 \
-  } PnPieceForm##S;                                                                                \
-  inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,         \
-                               T* oz) {                                                            \
-    const PnCentre##S* c = &form->centre;                                                          \
-    T s = form->height / (form->plane.x * px + form->plane.y * py + form->plane.z * pz);           \
-    T x = fma(px, s, -c->x), y = fma(py, s, -c->y), z = fma(pz, s, -c->z);                         \
-    M far = !(x * x + y * y + z * z <= PN_PIECE_FAR * c->norm2);                                   \
-    if (pn_any(far)) {                                                                             \
-      s = sqrt(c->norm2 / (px * px + py * py + pz * pz));                                          \
-      x = select(x, fma(px, s, -c->x), far);                                                       \
-      y = select(y, fma(py, s, -c->y), far);                                                       \
-      z = select(z, fma(pz, s, -c->z), far);                                                       \
-    }                                                                                              \
-    *ox = x;                                                                                       \
-    *oy = y;                                                                                       \
-    *oz = z;                                                                                       \
-  }                                                                                                \
-  /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small  \
-   * lanes only). */                                                                               \
-  inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,       \
-                              T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz) { \
-    T relative = 0.0f;                                                                             \
-    if (pn_any(form->small))                                                                       \
-      relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);   \
-    if (pn_all(form->small)) return relative;                                                      \
-    return select(piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em), relative,     \
-                  form->small);                                                                    \
+#define PN_DEFINE_PIECE_FORM(T, M, S)                                                                \
+  typedef struct {                                                                                   \
+    const PnEmission* em;     /* how the face emits */                                               \
+    PnCentre##S centre;       /* its reference point, in the lanes of `small` */                     \
+    float4 plane;             /* the face's plane (unit normal N in xyz) */                          \
+    T height;                 /* N·C */                                                             \
+    M small;                  /* lanes where the face is small against its distance */               \
+    PnPlanarFrame##S* planar; /* in the lanes of planar_lanes (not small): the planar form */        \
+    M planar_lanes;                                                                                  \
+  } PnPieceForm##S;                                                                                  \
+  inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,           \
+                               T* oz) {                                                              \
+    const PnCentre##S* c = &form->centre;                                                            \
+    T s = form->height / (form->plane.x * px + form->plane.y * py + form->plane.z * pz);             \
+    T x = fma(px, s, -c->x), y = fma(py, s, -c->y), z = fma(pz, s, -c->z);                           \
+    M far = !(x * x + y * y + z * z <= PN_PIECE_FAR * c->norm2);                                     \
+    if (pn_any(far)) {                                                                               \
+      s = sqrt(c->norm2 / (px * px + py * py + pz * pz));                                            \
+      x = select(x, fma(px, s, -c->x), far);                                                         \
+      y = select(y, fma(py, s, -c->y), far);                                                         \
+      z = select(z, fma(pz, s, -c->z), far);                                                         \
+    }                                                                                                \
+    *ox = x;                                                                                         \
+    *oy = y;                                                                                         \
+    *oz = z;                                                                                         \
+  }                                                                                                  \
+  /* An end p (from P) of a piece taken by the planar form, in the lanes of `project` (an            \
+   * occluder's point or a crossing direction, not a point of S'), along its ray to the face's       \
+   * plane: p · h / (−N·p). An end whose ray does not meet the plane in front of P stays. */     \
+  inline void planar_point##S(const PnPieceForm##S* form, M project, T* px, T* py, T* pz) {          \
+    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                    \
+    const M use = project & (np < 0.0f);                                                             \
+    if (!pn_any(use)) return;                                                                        \
+    const T s = -form->planar->h / np;                                                               \
+    *px = select(*px, *px * s, use);                                                                 \
+    *py = select(*py, *py * s, use);                                                                 \
+    *pz = select(*pz, *pz * s, use);                                                                 \
+  }                                                                                                  \
+  /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small    \
+   * lanes only). In the lanes of form->planar_lanes by the planar form, the ends of project0 and    \
+   * project1 taken to the face's plane (planar_point) and the piece's Δψ added to the frame's sum \
+   * in the lanes of `use`. */                                                                       \
+  inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,         \
+                              T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz,     \
+                              M project0, M project1, M use) {                                       \
+    T relative = 0.0f;                                                                               \
+    if (pn_any(form->small))                                                                         \
+      relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);     \
+    if (pn_all(form->small)) return relative;                                                        \
+    T term = 0.0f;                                                                                   \
+    if (!pn_all(form->planar_lanes))                                                                 \
+      term = piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em);                      \
+    if (pn_any(form->planar_lanes)) {                                                                \
+      planar_point##S(form, project0, &p0x, &p0y, &p0z);                                             \
+      planar_point##S(form, project1, &p1x, &p1y, &p1z);                                             \
+      T dpsi;                                                                                        \
+      const T planar =                                                                               \
+          planar_term##S(p0x, p0y, p0z, p1x, p1y, p1z, form->planar, nx, ny, nz, form->em, &dpsi);   \
+      form->planar->dpsi_sum += select((T)(0.0f), dpsi, use & form->planar_lanes);                   \
+      term = select(term, planar, form->planar_lanes);                                               \
+    }                                                                                                \
+    return select(term, relative, form->small);                                                      \
   }
 
 #define PN_DEFINE_CONTOUR_TWINS(T, M, S) \
@@ -338,8 +366,10 @@ inline float3 centre_offset(const PnPieceForm1* form, float3 p) {
   return (float3)(x, y, z);
 }
 
+/* form_piece_term1 of the piece a → b, whose ends are off the face's plane where project_a and
+ * project_b say. */
 inline float form_piece_term(const PnPieceForm1* form, float3 a, float3 b, float3 oa, float3 ob,
-                             float3 n) {
+                             float3 n, int project_a, int project_b) {
   return form_piece_term1(form, a.x, a.y, a.z, b.x, b.y, b.z, oa.x, oa.y, oa.z, ob.x, ob.y, ob.z,
-                          n.x, n.y, n.z);
+                          n.x, n.y, n.z, project_a, project_b, 1);
 }

@@ -243,8 +243,10 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
         o1z = select(o1z, edge_point8(offsets->az, offsets->bz, end), keep1);
       }
     }
+    /* An occluder's piece (no offsets) is off the face's plane; so are turned ends. */
+    const int8 off0 = offsets ? turned0 : (int8)(-1), off1 = offsets ? turned1 : (int8)(-1);
     float8 term = form_piece_term8(form, p0x, p0y, p0z, p1x, p1y, p1z, o0x, o0y, o0z, o1x, o1y, o1z,
-                                   nx, ny, nz);
+                                   nx, ny, nz, off0, off1, valid);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }
 }

@@ -26,10 +26,11 @@ typedef struct {
   float8 ox[PN_VEC_SOURCE], oy[PN_VEC_SOURCE], oz[PN_VEC_SOURCE];
   HorizonChord8 chord_offset;
   int8 exact;
-  int8 cut;            /* lanes whose horizon cuts the face */
-  int m;               /* the face's vertex count */
-  PnEmission emission; /* how the face emits (luminance_moments.cl) */
-  PnPieceForm8 form;   /* how its pieces are integrated (contour.cl), reading `emission` */
+  int8 cut;              /* lanes whose horizon cuts the face */
+  int m;                 /* the face's vertex count */
+  PnEmission emission;   /* how the face emits (luminance_moments.cl) */
+  PnPieceForm8 form;     /* how its pieces are integrated (contour.cl), reading `emission` */
+  PnPlanarFrame8 planar; /* the face's planar frame, where form.planar_lanes has a lane */
 } SourcePolygon8;
 
 /* Fills S' for the lanes in `asked` and returns those that see the face: in front of it and not
@@ -53,6 +54,11 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   if (small)
     s->form.height = face.plane.x * s->form.centre.x + face.plane.y * s->form.centre.y +
                      face.plane.z * s->form.centre.z;
+  /* The planar form where the lanes see the face near its plane (planar_term.cl), as
+   * unoccluded_face8 takes it. */
+  s->form.planar = &s->planar;
+  s->form.planar_lanes = planar_lanes8(face, &s->emission, x0, y0, z0) & ~s->form.small;
+  if (pn_any(s->form.planar_lanes)) s->planar = planar_frame8(pts, face, tables);
   for (int i = 0; i < m; ++i) {
     pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &s->x[i], &s->y[i], &s->z[i]);
     if (pn_any(fv->view.use)) {
@@ -432,6 +438,20 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
     }
 }
 
+/* The sum over the visible contour at the lanes in `lanes` (parts (a) and (b)), with the planar
+ * form's closing where it serves; *tied_lanes gets the lanes where an occluder's edge is tied to
+ * an S' edge. */
+float8 contour_sum8(SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
+                    int8* tied_lanes) {
+  PnSum8 sum = {0.0f, 0.0f};
+  s->planar.dpsi_sum = 0.0f;
+  integrate_source8(s, pts, lanes, cs, &sum);
+  integrate_holes8(s, pts, lanes, cs, &sum, tied_lanes);
+  if (!pn_any(s->form.planar_lanes & lanes)) return sum.s + sum.c;
+  return select(sum.s + sum.c, (sum.s + sum.c) + planar_closing8(&s->planar, &s->emission),
+                s->form.planar_lanes);
+}
+
 /* E of the face at the lanes in `asked` (others 0). Left out: in *rest the lanes whose occluders
  * did not fit beside the other lanes' (another call among themselves may hold them), in *scalar
  * those this path cannot take. */
@@ -451,20 +471,14 @@ float8 penumbra_face8(const Points8* pts, int8 asked, const FaceView8* fv,
   gather_occluders8(&cs, &s, pts, lanes, fv, tables, eps_length, inside, rest, scalar);
   lanes &= ~(*rest | *scalar);
   drop_hidden8(&cs, pts, tables, eps_length);
-  PnSum8 sum = {0.0f, 0.0f};
   int8 tied = 0;
-  integrate_source8(&s, pts, lanes, &cs, &sum);
-  integrate_holes8(&s, pts, lanes, &cs, &sum, &tied);
+  float8 e = contour_sum8(&s, pts, lanes, &cs, &tied);
   if (pn_any(tied)) {
     /* An occluder's edge tied to an S' edge (rare): its vertices into that edge's side plane,
      * and the lanes that have one integrated again. */
     snap_tied_vertices8(&cs, &s);
-    PnSum8 again = {0.0f, 0.0f};
     int8 still = 0;
-    integrate_source8(&s, pts, tied, &cs, &again);
-    integrate_holes8(&s, pts, tied, &cs, &again, &still);
-    sum.s = select(sum.s, again.s, tied);
-    sum.c = select(sum.c, again.c, tied);
+    e = select(e, contour_sum8(&s, pts, tied, &cs, &still), tied);
   }
-  return select((float8)(0.0f), fmax(sum.s + sum.c, 0.0f), lanes);
+  return select((float8)(0.0f), fmax(e, 0.0f), lanes);
 }

@@ -27,9 +27,10 @@ typedef struct {
   float3 contour_side[PN_MAX_CONTOUR_EDGES];
   int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
   int active_count;
-  PnEmission emission; /* how the face emits (luminance_moments.cl) */
-  PnPieceForm1 form;   /* how its pieces are integrated (contour.cl), reading `emission` */
-  bool tie_seen;       /* an occluder's edge was tied to an S' edge (contour_sum) */
+  PnEmission emission;   /* how the face emits (luminance_moments.cl) */
+  PnPieceForm1 form;     /* how its pieces are integrated (contour.cl), reading `emission` */
+  PnPlanarFrame1 planar; /* the face's planar frame, where form.planar_lanes is set */
+  bool tie_seen;         /* an occluder's edge was tied to an S' edge (contour_sum) */
 } PenumbraState;
 
 /* Keeps the part of S' with keep·x >= 0 (a plane through P; Sutherland–Hodgman). */
@@ -268,7 +269,9 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
       o0 = exact && !turned0 ? edge_point(oa, ob, lo[k]) : centre_offset(&st->form, p0);
       o1 = exact && !turned1 ? edge_point(oa, ob, hi[k]) : centre_offset(&st->form, p1);
     }
-    pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n));
+    /* An occluder's piece is off the face's plane; so are turned ends. */
+    const int off0 = owner >= 0 || turned0, off1 = owner >= 0 || turned1;
+    pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n, off0, off1));
   }
 }
 
@@ -322,6 +325,7 @@ void snap_tied_vertices(PenumbraState* st) {
  * edge. */
 float contour_sum(PenumbraState* st, float3 n, int* error) {
   st->tie_seen = false;
+  st->planar.dpsi_sum = 0.0f;
   PnSum sum = {0.0f, 0.0f};
   for (int i = 0; i < st->source_count; ++i) {
     const int j = i + 1 == st->source_count ? 0 : i + 1;
@@ -332,7 +336,8 @@ float contour_sum(PenumbraState* st, float3 n, int* error) {
     for (int e = st->first_contour[u]; e < st->first_contour[u + 1]; ++e)
       visible_edge_term(st->contour_a[e], st->contour_b[e], 0.0f, 0.0f, false, u, PN_ID_CONTOUR + e,
                         n, st, error, &sum);
-  return sum.s + sum.c;
+  if (!st->form.planar_lanes) return sum.s + sum.c;
+  return (sum.s + sum.c) + planar_closing1(&st->planar, &st->emission);
 }
 
 /* E / (L/2) of the visible part of S' (st->source) past the active occluders. Where an occluder's
@@ -399,6 +404,13 @@ bool source_polygon(PenumbraState* st, float3 p, float3 p_lo, float3 n, PnSource
   if (st->form.small)
     st->form.height =
         pn_dot(face.plane.xyz, (float3)(st->form.centre.x, st->form.centre.y, st->form.centre.z));
+  /* The planar form where P sees the face near its plane, as the lanes take it. */
+  const float3 v0 = pn_from1(tables->sourceVertices[face.firstVertex], p, p_lo);
+  st->form.planar = &st->planar;
+  st->form.planar_lanes = !st->form.small && planar_lanes1(face, &st->emission, v0.x, v0.y, v0.z);
+  if (st->form.planar_lanes)
+    st->planar =
+        planar_frame_at1(p.x, p.y, p.z, p_lo.x, p_lo.y, p_lo.z, n.x, n.y, n.z, face, tables);
   if (aperture) {
     for (int i = 0; i < 4; ++i) {
       st->source[i] = corners[i];

@@ -31,6 +31,7 @@
 
 #define PN_PLANAR_TAIL_RATIO 0.25f /* h²/D² at most where A_p is the tail sum */
 #define PN_PLANAR_TAIL 14          /* tail terms: 0.25^14 = 3.7e-9 */
+#define PN_PLANAR_ALONG_N 1e-5f    /* b − a along N beyond which that part is taken out */
 #define PN_PLANAR_MAX_P (PN_MOMENT_DIRECT_ORDER + 2 + 2 * PN_PLANAR_TAIL)
 
 /* Whether the planar form serves a face: uniform luminance, or a polynomial about −N (a
@@ -47,174 +48,182 @@ inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
  * 30° for a polynomial (PN_PLANAR_SINE), whose higher powers' terms lose more (measured by
  * tests/near_plane_test.cpp: at 20-30° with Lambert's terms, up to 8e-6 of E uniform and 2.0e-5
  * for a power 9). The planar form at 20-30° costs a work plane under ceiling panels a third more
- * kernel time. */
+ * kernel time. From vertex 0's offset, as every other choice of form: a lane's E does not depend
+ * on the scene's origin (the positions' hi/lo split), nor on the lanes beside it, and both
+ * penumbra paths switch where the unoccluded path does. */
 #define PN_PLANAR_SINE_UNIFORM 0.35f
 #define PN_PLANAR_SINE 0.5f
-inline int8 planar_lanes8(PnSourceFace face, const PnEmission* em, float8 x, float8 y, float8 z) {
-  if (!planar_emission(face, em)) return 0;
-  /* From vertex 0's offset, as every other choice of form: a lane's E does not depend on the
-   * scene's origin (the positions' hi/lo split), nor on the lanes beside it. */
-  const float8 h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);
-  const float sine = em->order <= 0 ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;
-  return h * h < sine * sine * (x * x + y * y + z * z);
-}
 
 /* What the planar form needs of a face per lane: P's height h above the face's plane, n·N, the
  * plane's normal N, and the running sum of the edges' Δψ. */
-typedef struct {
-  float8 h, nn, dpsi_sum;
-  float3 n;
-} PnPlanarFrame8;
-
-/* h = N·(P − V0) per lane, V0 the face's first vertex: V0 − P per coordinate as an unevaluated
- * sum (TwoSum of the hi parts, plus the lo parts), each product's rounding kept by fma, so that h
- * is good to a rounding of itself however far P is from the face. */
-inline float8 planar_height8(const Points8* pts, PnSourceFace face, const PnSceneTables* tables) {
-  const PnPosition v = tables->sourceVertices[face.firstVertex];
-  const float3 n = face.plane.xyz;
-  PnSum8 sum = {0.0f, 0.0f};
-  float8 rest = 0.0f;
-#define PN_PLANAR_COORDINATE(c, pc, lc)                                      \
-  {                                                                          \
-    float8 s = v.hi.c - pts->pc, bp = s - v.hi.c;                            \
-    float8 err = (v.hi.c - (s - bp)) + (-pts->pc - bp) + (v.lo.c - pts->lc); \
-    float8 prod = n.c * s;                                                   \
-    pn_sum_add8(&sum, prod);                                                 \
-    rest += fma((float8)(n.c), s, -prod) + n.c * err;                        \
+#define PN_DEFINE_PLANAR_FRAME(T, M, S, Sum, add)                                                     \
+  inline M planar_lanes##S(PnSourceFace face, const PnEmission* em, T x, T y, T z) {                  \
+    if (!planar_emission(face, em)) return (M)(0);                                                    \
+    const T h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);                            \
+    const float sine = em->order <= 0 ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;                      \
+    return h * h < sine * sine * (x * x + y * y + z * z);                                             \
+  }                                                                                                   \
+  typedef struct {                                                                                    \
+    T h, nn, dpsi_sum;                                                                                \
+    float3 n;                                                                                         \
+  } PnPlanarFrame##S;                                                                                 \
+  /* h = N·(P − V0), V0 the face's first vertex and P at (px, py, pz) + (lx, ly, lz): V0 − P per \
+   * coordinate as an unevaluated sum (TwoSum of the hi parts, plus the lo parts), each product's     \
+   * rounding kept by fma, so that h is good to a rounding of itself however far P is from the        \
+   * face. */                                                                                         \
+  inline T planar_height##S(T px, T py, T pz, T lx, T ly, T lz, PnSourceFace face,                    \
+                            const PnSceneTables* tables) {                                            \
+    const PnPosition v = tables->sourceVertices[face.firstVertex];                                    \
+    const float3 n = face.plane.xyz;                                                                  \
+    const T sx = v.hi.x - px, sy = v.hi.y - py, sz = v.hi.z - pz;                                     \
+    const T bx = sx - v.hi.x, by = sy - v.hi.y, bz = sz - v.hi.z;                                     \
+    const T ex = (v.hi.x - (sx - bx)) + (-px - bx) + (v.lo.x - lx);                                   \
+    const T ey = (v.hi.y - (sy - by)) + (-py - by) + (v.lo.y - ly);                                   \
+    const T ez = (v.hi.z - (sz - bz)) + (-pz - bz) + (v.lo.z - lz);                                   \
+    const T qx = n.x * sx, qy = n.y * sy, qz = n.z * sz;                                              \
+    Sum sum = {0.0f, 0.0f};                                                                           \
+    add(&sum, qx);                                                                                    \
+    add(&sum, qy);                                                                                    \
+    add(&sum, qz);                                                                                    \
+    const T rest = (fma((T)(n.x), sx, -qx) + n.x * ex) + (fma((T)(n.y), sy, -qy) + n.y * ey) +        \
+                   (fma((T)(n.z), sz, -qz) + n.z * ez);                                               \
+    return -(sum.s + (sum.c + rest));                                                                 \
+  }                                                                                                   \
+  /* The planar frame of a face for P (as planar_height) with unit normal (nx, ny, nz). */            \
+  inline PnPlanarFrame##S planar_frame_at##S(T px, T py, T pz, T lx, T ly, T lz, T nx, T ny, T nz,    \
+                                             PnSourceFace face, const PnSceneTables* tables) {        \
+    PnPlanarFrame##S frame;                                                                           \
+    frame.n = face.plane.xyz;                                                                         \
+    frame.h = planar_height##S(px, py, pz, lx, ly, lz, face, tables);                                 \
+    frame.nn = nx * frame.n.x + ny * frame.n.y + nz * frame.n.z;                                      \
+    frame.dpsi_sum = 0.0f;                                                                            \
+    return frame;                                                                                     \
   }
-  PN_PLANAR_COORDINATE(x, px, lx)
-  PN_PLANAR_COORDINATE(y, py, ly)
-  PN_PLANAR_COORDINATE(z, pz, lz)
-#undef PN_PLANAR_COORDINATE
-  return -(sum.s + (sum.c + rest));
-}
-
-/* The planar frame of a face for the work-item's lanes. */
-inline PnPlanarFrame8 planar_frame8(const Points8* pts, PnSourceFace face,
-                                    const PnSceneTables* tables) {
-  PnPlanarFrame8 frame;
-  frame.n = face.plane.xyz;
-  frame.h = planar_height8(pts, face, tables);
-  frame.nn = pts->nx * frame.n.x + pts->ny * frame.n.y + pts->nz * frame.n.z;
-  frame.dpsi_sum = 0.0f;
-  return frame;
-}
 
 /* The term of the edge a → b (vectors from P, both in the face's plane): 2 Σ_k c_k M_k(edge)
- * less its Δψ part, which *dpsi receives (the caller sums them for planar_closing8). */
-inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
-                           const PnPlanarFrame8* frame, float8 nx, float8 ny, float8 nz,
-                           const PnEmission* em, float8* dpsi) {
-  const float8 h = frame->h, nn = frame->nn;
-  const float3 N = frame->n;
-  /* The edge in the plane: F + A, F + B, t its direction, m = t × N, d = m·A, ta and tb the
-   * positions of A and B along t from the foot of the perpendicular from F; d and the positions
-   * from the edge's midpoint, so that the edge b → a gives exactly −(its term) (a contour that
-   * runs along an edge and back, as the horizon's chord of a face that only touches the horizon
-   * does, sums to 0). */
-  const float8 fx = 0.5f * (ax + bx) + h * N.x, fy = 0.5f * (ay + by) + h * N.y,
-               fz = 0.5f * (az + bz) + h * N.z;
-  const float8 ex = bx - ax, ey = by - ay, ez = bz - az;
-  const float8 len = sqrt(ex * ex + ey * ey + ez * ez);
-  const int8 degenerate = len <= 0.0f;
-  const float8 inv = 1.0f / select(len, (float8)(1.0f), degenerate);
-  const float8 tx = ex * inv, ty = ey * inv, tz = ez * inv;
-  const float8 mx = ty * N.z - tz * N.y, my = tz * N.x - tx * N.z, mz = tx * N.y - ty * N.x;
-  const float8 d = mx * fx + my * fy + mz * fz;
-  const float8 mid = tx * fx + ty * fy + tz * fz, ta = mid - 0.5f * len, tb = mid + 0.5f * len;
-  const float8 d2 = d * d, h2 = h * h, big_d2 = d2 + h2, big_d = sqrt(big_d2);
-  const float8 theta = atan2(len * big_d, big_d2 + ta * tb);
-  const float8 psi = atan2(d * len, d2 + ta * tb);
-  *dpsi = select(psi, (float8)(0.0f), degenerate);
-  const float8 q = h2 / big_d2; /* (h / D)², the largest g² on the edge's line */
-  const int8 tail = q <= PN_PLANAR_TAIL_RATIO;
-  const float8 nm = nx * mx + ny * my + nz * mz;
-  const float8 d_over_h = d / fmax(h, 1e-30f);
-  const float8 j2 = h * theta / big_d;
-  float8 term;
-  if (em->order <= 0 || em->order > PN_MOMENT_DIRECT_ORDER) {
-    /* Uniform luminance (and a narrow beam's c_0): A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d,
-     * c = |d| / D. Where h²/D² is small, as sgn d (atan(u) − c atan(c u)) between the ends
-     * (u = τ/|d|), written without cancellation: atan of the difference of atan(u) − atan(c u)
-     * at both ends, plus (1 − c) θ, 1 − c = h² / (D (D + |d|)). */
-    const float8 ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;
-    const float8 num = omc * ad * len * (d2 - c * ta * tb);
-    const float8 den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;
-    const float8 a2_tail = copysign(atan2(num, den) + omc * theta, d);
-    const float8 a2 = select(psi - d_over_h * j2, a2_tail, tail);
-    const float c0 = em->order < 0 ? 1.0f : em->c[0];
-    term = -c0 * (nm * j2 - nn * a2);
-    if (em->order > PN_MOMENT_DIRECT_ORDER) {
-      /* A narrow beam's powers above 0 (luminance_moments.cl's azimuth form) by the moment term
-       * with their Δψ part left to the closing (its azimuth about w = −N is Δψ about F). Where
-       * the moment term keeps its direct recurrences (an arc near the axis), their Δψ part is
-       * taken out here instead. */
-      const float8 cx = ey * az - ez * ay, cy = ez * ax - ex * az, cz = ex * ay - ey * ax;
-      const float8 s = sqrt(cx * cx + cy * cy + cz * cz);
-      const PnArcShares8 none = {0.0f, 0.0f, 0.0f};
-      int8 azimuth = 0;
-      const float8 high =
-          moment_term8(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, &none, em, &azimuth);
-      const float beyond = em->tail[em->order] + em->tail[em->order - 1]; /* Σ_{k>=1} c_k/(k+2) */
-      const float8 high_rest = select(high + 2.0f * nn * psi * beyond, high, azimuth);
-      term += select(high_rest, (float8)(0.0f), s <= 0.0f);
-    }
-  } else {
-    /* J_p, p = 2 .. last (the tail's powers where some lane takes it). */
-    const int order = em->order;
-    const int last = pn_any(tail) ? order + 2 + 2 * PN_PLANAR_TAIL : order + 2;
-    const float8 ra = sqrt(ta * ta + big_d2), rb = sqrt(tb * tb + big_d2);
-    const float8 ga = h / ra, gb = h / rb, ua = ta / ra, ub = tb / rb;
-    /* ub − ua without cancellation where both ends lie on one side of the perpendicular's foot:
-     * (tb² ra² − ta² rb²) / (…) = len (ta + tb) D² / ((tb ra + ta rb) ra rb). */
-    const float8 du =
-        select(ub - ua, len * (ta + tb) * big_d2 / ((tb * ra + ta * rb) * ra * rb), ta * tb > 0.0f);
-    float8 j[PN_PLANAR_MAX_P + 1];
-    j[2] = j2;
-    j[3] = q * du;
-    /* The bracket [u g^{p−1}]_A^B as du g_B^{p−1} + u_A (g_B^{p−1} − g_A^{p−1}), the latter by
-     * D_{n+1} = g_B D_n + g_A^n (g_B − g_A), g_B − g_A = −h len (ta + tb) / (ra rb (ra + rb)):
-     * each a product of small factors where the edge is short against its distance. */
-    const float8 dg = -h * len * (ta + tb) / (ra * rb * (ra + rb));
-    float8 pa = ga, pb = gb, dp = dg; /* g^{p−1} at both ends, and their difference */
-    for (int p = 2; p + 2 <= last; ++p) {
-      const float pf = (float)p;
-      j[p + 2] = q * ((du * pb + ua * dp) / pf + (pf - 1.0f) / pf * j[p]);
-      dp = gb * dp + pa * dg;
-      pa *= ga;
-      pb *= gb;
-    }
-    /* A_p forward from A_0 = Δψ and A_1 = [atan(h τ / (d r))]_A^B, in the lanes not in the
-     * tail; the tail lanes' A_p = (d/h) Σ_{j>=1} J_{p+2j}, from the highest p down. */
-    float8 a_even = psi, a_odd = atan2(h * d * du, d2 + h2 * ua * ub);
-    PnSum8 inplane = {0.0f, 0.0f}, normal = {0.0f, 0.0f};
-    for (int k = 0; k <= order; ++k) {
-      const int p = k + 2;
-      const float ck = em->c[k] / (float)p;
-      float8* a = (p & 1) ? &a_odd : &a_even;
-      *a -= d_over_h * j[p];
-      pn_sum_add8(&inplane, ck * j[p]);
-      pn_sum_add8(&normal, ck * select(*a, (float8)(0.0f), tail));
-    }
-    if (pn_any(tail)) {
-      float8 tail_even = 0.0f, tail_odd = 0.0f;
-      for (int p = last; p >= order + 3; --p) {
-        if (p & 1)
-          tail_odd += j[p];
-        else
-          tail_even += j[p];
-      }
-      for (int k = order; k >= 0; --k) {
-        const int p = k + 2;
-        float8* sum = (p & 1) ? &tail_odd : &tail_even;
-        pn_sum_add8(&normal, em->c[k] / (float)p * select((float8)(0.0f), d_over_h * *sum, tail));
-        *sum += j[p];
-      }
-    }
-    term = -2.0f * (nm * (inplane.s + inplane.c) - nn * (normal.s + normal.c));
+ * less its Δψ part, which *dpsi receives (the caller sums them for planar_closing##S). */
+#define PN_DEFINE_PLANAR_TERM(T, M, S, Sum, add)                                                            \
+  inline T planar_term##S(T ax, T ay, T az, T bx, T by, T bz, const PnPlanarFrame##S* frame, T nx,          \
+                          T ny, T nz, const PnEmission* em, T* dpsi) {                                      \
+    const T h = frame->h, nn = frame->nn;                                                                   \
+    const float3 N = frame->n;                                                                              \
+    /* The edge in the plane: F + A, F + B, t its direction, m = t × N, d = m·A, ta and tb the            \
+     * positions of A and B along t from the foot of the perpendicular from F; d and the positions          \
+     * from the edge's midpoint, so that the edge b → a gives exactly −(its term) (a contour that       \
+     * runs along an edge and back, as the horizon's chord of a face that only touches the horizon          \
+     * does, sums to 0). */                                                                                 \
+    const T fx = 0.5f * (ax + bx) + h * N.x, fy = 0.5f * (ay + by) + h * N.y,                               \
+            fz = 0.5f * (az + bz) + h * N.z;                                                                \
+    /* b − a, less its part along N where that is more than PN_PLANAR_ALONG_N of it: an edge              \
+     * seen end-on (an occluder's edge taken to the plane, both ends on one ray) is then as short           \
+     * along t as it is in the plane, not the ends' heights' rounding long along N. Below, the              \
+     * part is that rounding, and taking it out would only round b − a again. */                          \
+    const T e0x = bx - ax, e0y = by - ay, e0z = bz - az;                                                    \
+    const T en = e0x * N.x + e0y * N.y + e0z * N.z;                                                         \
+    const M along_n = fabs(en) > PN_PLANAR_ALONG_N * sqrt(e0x * e0x + e0y * e0y + e0z * e0z);               \
+    const T ex = select(e0x, e0x - en * N.x, along_n), ey = select(e0y, e0y - en * N.y, along_n),           \
+            ez = select(e0z, e0z - en * N.z, along_n);                                                      \
+    const T len = sqrt(ex * ex + ey * ey + ez * ez);                                                        \
+    const M degenerate = len <= 0.0f;                                                                       \
+    const T inv = 1.0f / select(len, (T)(1.0f), degenerate);                                                \
+    const T tx = ex * inv, ty = ey * inv, tz = ez * inv;                                                    \
+    const T mx = ty * N.z - tz * N.y, my = tz * N.x - tx * N.z, mz = tx * N.y - ty * N.x;                   \
+    const T d = mx * fx + my * fy + mz * fz;                                                                \
+    const T mid = tx * fx + ty * fy + tz * fz, ta = mid - 0.5f * len, tb = mid + 0.5f * len;                \
+    const T d2 = d * d, h2 = h * h, big_d2 = d2 + h2, big_d = sqrt(big_d2);                                 \
+    const T theta = atan2(len * big_d, big_d2 + ta * tb);                                                   \
+    const T psi = atan2(d * len, d2 + ta * tb);                                                             \
+    *dpsi = select(psi, (T)(0.0f), degenerate);                                                             \
+    const T q = h2 / big_d2; /* (h / D)², the largest g² on the edge's line */                            \
+    const M tail = q <= PN_PLANAR_TAIL_RATIO;                                                               \
+    const T nm = nx * mx + ny * my + nz * mz;                                                               \
+    const T d_over_h = d / fmax(h, 1e-30f);                                                                 \
+    const T j2 = h * theta / big_d;                                                                         \
+    T term;                                                                                                 \
+    if (em->order <= 0 || em->order > PN_MOMENT_DIRECT_ORDER) {                                             \
+      /* Uniform luminance (and a narrow beam's c_0): A_2 = Δψ − (d/h) J_2 = Δψ − c θ sgn d,       \
+       * c = |d| / D. Where h²/D² is small, as sgn d (atan(u) − c atan(c u)) between the ends           \
+       * (u = τ/|d|), written without cancellation: atan of the difference of atan(u) − atan(c u)        \
+       * at both ends, plus (1 − c) θ, 1 − c = h² / (D (D + |d|)). */                                 \
+      const T ad = fabs(d), omc = h2 / (big_d * (big_d + ad)), c = 1.0f - omc;                              \
+      const T num = omc * ad * len * (d2 - c * ta * tb);                                                    \
+      const T den = (d2 + c * ta * ta) * (d2 + c * tb * tb) + omc * omc * d2 * ta * tb;                     \
+      const T a2_tail = copysign(atan2(num, den) + omc * theta, d);                                         \
+      const T a2 = select(psi - d_over_h * j2, a2_tail, tail);                                              \
+      const float c0 = em->order < 0 ? 1.0f : em->c[0];                                                     \
+      term = -c0 * (nm * j2 - nn * a2);                                                                     \
+      if (em->order > PN_MOMENT_DIRECT_ORDER) {                                                             \
+        /* A narrow beam's powers above 0 (luminance_moments.cl's azimuth form) by the moment term          \
+         * with their Δψ part left to the closing (its azimuth about w = −N is Δψ about F). Where     \
+         * the moment term keeps its direct recurrences (an arc near the axis), their Δψ part is          \
+         * taken out here instead. */                                                                       \
+        const T cx = ey * az - ez * ay, cy = ez * ax - ex * az, cz = ex * ay - ey * ax;                     \
+        const T s = sqrt(cx * cx + cy * cy + cz * cz);                                                      \
+        const PnArcShares##S none = {0.0f, 0.0f, 0.0f};                                                     \
+        M azimuth = 0;                                                                                      \
+        const T high = moment_term##S(ax, ay, az, bx, by, bz, cx, cy, cz, s, nx, ny, nz, &none,             \
+                                      em, &azimuth);                                                        \
+        const float beyond =                                                                                \
+            em->tail[em->order] + em->tail[em->order - 1]; /* Σ_{k>=1} c_k/(k+2) */                        \
+        const T high_rest = select(high + 2.0f * nn * psi * beyond, high, azimuth);                         \
+        term += select(high_rest, (T)(0.0f), s <= 0.0f);                                                    \
+      }                                                                                                     \
+    } else {                                                                                                \
+      /* J_p, p = 2 .. last (the tail's powers where some lane takes it). */                                \
+      const int order = em->order;                                                                          \
+      const int last = pn_any(tail) ? order + 2 + 2 * PN_PLANAR_TAIL : order + 2;                           \
+      const T ra = sqrt(ta * ta + big_d2), rb = sqrt(tb * tb + big_d2);                                     \
+      const T ga = h / ra, gb = h / rb, ua = ta / ra, ub = tb / rb;                                         \
+      /* ub − ua without cancellation where both ends lie on one side of the perpendicular's foot:        \
+       * (tb² ra² − ta² rb²) / (…) = len (ta + tb) D² / ((tb ra + ta rb) ra rb). */                \
+      const T du = select(ub - ua, len * (ta + tb) * big_d2 / ((tb * ra + ta * rb) * ra * rb),              \
+                          ta * tb > 0.0f);                                                                  \
+      T j[PN_PLANAR_MAX_P + 1];                                                                             \
+      j[2] = j2;                                                                                            \
+      j[3] = q * du;                                                                                        \
+      /* The bracket [u g^{p−1}]_A^B as du g_B^{p−1} + u_A (g_B^{p−1} − g_A^{p−1}), the latter by \
+       * D_{n+1} = g_B D_n + g_A^n (g_B − g_A), g_B − g_A = −h len (ta + tb) / (ra rb (ra + rb)):     \
+       * each a product of small factors where the edge is short against its distance. */                   \
+      const T dg = -h * len * (ta + tb) / (ra * rb * (ra + rb));                                            \
+      T pa = ga, pb = gb, dp = dg; /* g^{p−1} at both ends, and their difference */                       \
+      for (int p = 2; p + 2 <= last; ++p) {                                                                 \
+        const float pf = (float)p;                                                                          \
+        j[p + 2] = q * ((du * pb + ua * dp) / pf + (pf - 1.0f) / pf * j[p]);                                \
+        dp = gb * dp + pa * dg;                                                                             \
+        pa *= ga;                                                                                           \
+        pb *= gb;                                                                                           \
+      }                                                                                                     \
+      /* A_p forward from A_0 = Δψ and A_1 = [atan(h τ / (d r))]_A^B, in the lanes not in the            \
+       * tail; the tail lanes' A_p = (d/h) Σ_{j>=1} J_{p+2j}, from the highest p down. */                  \
+      T a_even = psi, a_odd = atan2(h * d * du, d2 + h2 * ua * ub);                                         \
+      Sum inplane = {0.0f, 0.0f}, normal = {0.0f, 0.0f};                                                    \
+      for (int k = 0; k <= order; ++k) {                                                                    \
+        const int p = k + 2;                                                                                \
+        const float ck = em->c[k] / (float)p;                                                               \
+        T* a = (p & 1) ? &a_odd : &a_even;                                                                  \
+        *a -= d_over_h * j[p];                                                                              \
+        add(&inplane, j[p] * ck);                                                                           \
+        add(&normal, select(*a, (T)(0.0f), tail) * ck);                                                     \
+      }                                                                                                     \
+      if (pn_any(tail)) {                                                                                   \
+        T tail_even = 0.0f, tail_odd = 0.0f;                                                                \
+        for (int p = last; p >= order + 3; --p) {                                                           \
+          if (p & 1)                                                                                        \
+            tail_odd += j[p];                                                                               \
+          else                                                                                              \
+            tail_even += j[p];                                                                              \
+        }                                                                                                   \
+        for (int k = order; k >= 0; --k) {                                                                  \
+          const int p = k + 2;                                                                              \
+          T* sum = (p & 1) ? &tail_odd : &tail_even;                                                        \
+          add(&normal, em->c[k] / (float)p * select((T)(0.0f), d_over_h * *sum, tail));                     \
+          *sum += j[p];                                                                                     \
+        }                                                                                                   \
+      }                                                                                                     \
+      term = -2.0f * (nm * (inplane.s + inplane.c) - nn * (normal.s + normal.c));                           \
+    }                                                                                                       \
+    return select(term, (T)(0.0f), degenerate);                                                             \
   }
-  return select(term, (float8)(0.0f), degenerate);
-}
 
 /* The face's Δψ part: −2 (n·N) Σ_k c_k / (k + 2) times the sum of its edges' Δψ, which is 2π
  * times the winding of the contour about F, 0 or 2π up to the terms' rounding, and is taken as
@@ -222,13 +231,32 @@ inline float8 planar_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by
  * angle the region spans at F (π on an edge, the corner's angle at a vertex) and is kept as it
  * is: E is then of the order of the face-on light, and nothing cancels. */
 #define PN_PLANAR_ON_CONTOUR 1e-3f
-inline float8 planar_closing8(const PnPlanarFrame8* frame, const PnEmission* em) {
-  const float8 dpsi_sum = frame->dpsi_sum, nn = frame->nn;
-  const float two_pi = 6.283185307f;
-  float8 winding = rint(dpsi_sum / two_pi) * two_pi;
-  winding = select(dpsi_sum, winding, fabs(dpsi_sum - winding) < PN_PLANAR_ON_CONTOUR);
-  float weight = 0.0f;
-  const int order = em->order < 0 ? 0 : em->order;
-  for (int k = 0; k <= order; ++k) weight += (em->order < 0 ? 1.0f : em->c[k]) / (float)(k + 2);
-  return -2.0f * nn * winding * weight;
+#define PN_DEFINE_PLANAR_CLOSING(T, M, S)                                                          \
+  inline T planar_closing##S(const PnPlanarFrame##S* frame, const PnEmission* em) {                \
+    const T dpsi_sum = frame->dpsi_sum, nn = frame->nn;                                            \
+    const float two_pi = 6.283185307f;                                                             \
+    T winding = rint(dpsi_sum / two_pi) * two_pi;                                                  \
+    winding = select(dpsi_sum, winding, fabs(dpsi_sum - winding) < PN_PLANAR_ON_CONTOUR);          \
+    float weight = 0.0f;                                                                           \
+    const int order = em->order < 0 ? 0 : em->order;                                               \
+    for (int k = 0; k <= order; ++k) weight += (em->order < 0 ? 1.0f : em->c[k]) / (float)(k + 2); \
+    return -2.0f * nn * winding * weight;                                                          \
+  }
+
+#define PN_DEFINE_PLANAR_TWINS(T, M, S, Sum, add) \
+  PN_DEFINE_PLANAR_FRAME(T, M, S, Sum, add)       \
+  PN_DEFINE_PLANAR_TERM(T, M, S, Sum, add)        \
+  PN_DEFINE_PLANAR_CLOSING(T, M, S)
+PN_DEFINE_PLANAR_TWINS(float, int, 1, PnSum, pn_sum_add)     /* one body for the scalar path */
+PN_DEFINE_PLANAR_TWINS(float8, int8, 8, PnSum8, pn_sum_add8) /* and for eight lanes */
+#undef PN_DEFINE_PLANAR_TWINS
+#undef PN_DEFINE_PLANAR_FRAME
+#undef PN_DEFINE_PLANAR_TERM
+#undef PN_DEFINE_PLANAR_CLOSING
+
+/* The planar frame of a face for the work-item's lanes. */
+inline PnPlanarFrame8 planar_frame8(const Points8* pts, PnSourceFace face,
+                                    const PnSceneTables* tables) {
+  return planar_frame_at8(pts->px, pts->py, pts->pz, pts->lx, pts->ly, pts->lz, pts->nx, pts->ny,
+                          pts->nz, face, tables);
 }

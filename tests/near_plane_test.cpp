@@ -2,7 +2,8 @@
 // against the exact integral in double, for a Lambertian rect source and for luminaires' fitted
 // luminances (orders 0, 2 and 9), level and tilted. Lambert's contour terms lose there as 1/sin²e
 // of E (e the elevation above the face's plane); the planar form (kernels/planar_term.cl) keeps
-// E to the kernel's relative tolerance.
+// E to the kernel's relative tolerance. Then the same in a penumbra: a bezel round the opening,
+// on the three penumbra paths, against the float floor of the contour's directions.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 
 #include "geometry/tolerance.hpp"
 #include "luminaire_test_support.hpp"
+#include "penumbra_paths.hpp"
 #include "photometry/luminous_opening.hpp"
 #include "photometry_files.hpp"
 #include "reference/exact_illuminance.hpp"
@@ -186,6 +188,106 @@ TEST(NearAFacesPlane, LuminairesMeetTheExactIntegralToTheKernelTolerance) {
   for (const Case& c : cases)
     for (const LuminaireAim& aim : kAims)
       EXPECT_EQ(checkLuminaire(c.file, aim, c.name, c.farthest), c.order) << c.name;
+}
+
+// Four boxes round the opening, 0.05 m outside its edges and 0.03 m wide, from 0.01 to 0.04 m in
+// front of its plane: from near that plane the opening is seen through the 1 cm slit between
+// them and it, its image cut by theirs.
+std::vector<Solid> bezel(const ConvexPolygon& opening) {
+  const auto& v = opening.vertices();
+  Vec3 centre = Vec3::Zero();
+  for (const Vec3& x : v) centre += x / double(v.size());
+  const Vec3 n = opening.normal(), e1 = v[1] - v[0], e2 = v[2] - v[1];
+  const Vec3 u1 = e1.normalized(), u2 = e2.normalized();
+  const double o1 = 0.5 * e1.norm() + 0.05, o2 = 0.5 * e2.norm() + 0.05, w = 0.03;
+  std::vector<Solid> solids;
+  const auto box = [&](double a0, double a1, double b0, double b1) {
+    std::vector<Vec3> corners;
+    for (const double a : {a0, a1})
+      for (const double b : {b0, b1})
+        for (const double depth : {0.01, 0.04})
+          corners.push_back(centre + a * u1 + b * u2 + depth * n);
+    solids.push_back(Solid{"bezel", ConvexPolyhedron::hull(corners, 1e-9), -1});
+  };
+  box(o1, o1 + w, -o2 - w, o2 + w);
+  box(-o1 - w, -o1, -o2 - w, o2 + w);
+  box(-o1, o1, o2, o2 + w);
+  box(-o1, o1, -o2 - w, -o2);
+  return solids;
+}
+
+TEST(NearAFacesPlane, PenumbraeOfABezelStayWithinTheFloatFloorOnEveryPath) {
+  // The contour of a penumbra is made of side planes through P and their crossing directions,
+  // each from float vectors from P: good to a few roundings u = 2⁻²⁴ of a radian. Seen from e
+  // above the opening's plane, a direction's error δ moves its image on the plane by δ·r/sin e (r
+  // the distance), so the visible area, and E, errs by about u·(r/ℓ)/sin e of the unoccluded E
+  // (ℓ = 0.3 m, the opening's short side): the bound is 24 times that. The planar form keeps the
+  // penumbra paths there; Lambert's terms of the pieces, as the paths took them before, lose as
+  // 1/sin²e and fail it (up to 168 times the floor on the tilted opening). Points 1-25° above the
+  // plane whose E is 2-98 % of the unoccluded E; the Lambertian rect and a luminaire's quadratic
+  // fit; the opening level and tilted 20°.
+  TempDir dir("near-plane-penumbra");
+  const auto quadratic = writeIes(dir, "quadratic.ies", [](double g) {
+    const double c = cosine(g);
+    return g < 90 ? 1000.0 * c * (1.0 / 3 + 2.0 / 3 * c * c) : 0.0;
+  });
+  const auto paths = penumbraPaths();
+  constexpr double kFloorMultiple = 24.0;
+  const double u = std::ldexp(1.0, -24), shortSide = 0.3;
+  for (const LuminaireAim& aim : kAims) {
+    for (const bool lambertian : {true, false}) {
+      const Luminaire luminaire =
+          placeLuminaire({quadratic, Vec3(1.0, 0.5, 3.0), aim, 1.0, LuminaireModel::Area});
+      const ConvexPolygon opening = placedOpening(*luminaire.opening, luminaire.instances.front());
+      Scene open;
+      if (lambertian)
+        open.sources.push_back(areaSource(opening.vertices(), 1000.0));
+      else
+        open.luminaires.push_back(luminaire);
+      Scene scene = open;
+      for (Solid& solid : bezel(opening)) scene.solids.push_back(std::move(solid));
+      const GrazingPoints all = grazingPoints(opening, {1, 2, 4, 8, 15, 25}, {20, 45, 90});
+      const auto reference = [&](const Scene& s, const std::vector<SamplePoint>& points) {
+        return lambertian ? exactIlluminance(s, points)[0] : referenceE(s, points);
+      };
+      const std::vector<double> unoccludedAll = reference(open, all.points);
+      const std::vector<double> exactAll = reference(scene, all.points);
+      GrazingPoints g;
+      std::vector<double> unoccluded, exact;
+      for (std::size_t i = 0; i < all.points.size(); ++i)
+        if (exactAll[i] > 0.02 * unoccludedAll[i] && exactAll[i] < 0.98 * unoccludedAll[i]) {
+          g.points.push_back(all.points[i]);
+          g.emitterDeg.push_back(all.emitterDeg[i]);
+          unoccluded.push_back(unoccludedAll[i]);
+          exact.push_back(exactAll[i]);
+        }
+      ASSERT_GT(g.points.size(), 300u);
+      const Vec3 centre = opening.centroid();
+      for (const auto& path : paths) {
+        IlluminanceEngine engine(cpuDevice(), scene, path.options);
+        const std::vector<double> e = engine.illuminance(g.points);
+        double worst = 0.0, worstShare = 0.0;
+        for (std::size_t i = 0; i < g.points.size(); ++i) {
+          const double r = (g.points[i].position - centre).norm();
+          const double floor =
+              u * (r / shortSide) / std::sin(g.emitterDeg[i] * kDegree) * unoccluded[i];
+          const double error = std::abs(e[i] - exact[i]);
+          EXPECT_LE(error, kFloorMultiple * floor)
+              << (lambertian ? "rect" : "quadratic") << ", tilt " << aim.tiltDeg << "°, "
+              << path.name << ", " << g.emitterDeg[i] << "° above the plane at ("
+              << g.points[i].position.transpose() << "): E = " << e[i] << ", exact " << exact[i]
+              << ", unoccluded " << unoccluded[i];
+          worst = std::max(worst, error / unoccluded[i]);
+          worstShare = std::max(worstShare, error / floor);
+        }
+        std::printf(
+            "  %s, tilt %.0f°, %s path: %zu points in the penumbra, largest |E − exact| %.1e of "
+            "the unoccluded E, %.1f times the floor\n",
+            lambertian ? "rect" : "quadratic", aim.tiltDeg, path.name, g.points.size(), worst,
+            worstShare);
+      }
+    }
+  }
 }
 
 }  // namespace

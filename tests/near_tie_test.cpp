@@ -16,6 +16,7 @@
 
 #include "engine/illuminance_engine.hpp"
 #include "geometry/tolerance.hpp"
+#include "penumbra_paths.hpp"
 #include "reference/exact_illuminance.hpp"
 #include "test_device.hpp"
 #include "test_scenes.hpp"
@@ -60,14 +61,7 @@ TEST(NearTie, ALipJustInsideAPanelsEdgeKeepsTheContourClosedOnEveryPath) {
     points.push_back({Vec3(2.8101675217765725 + dx, -1.4540322440484688, 2.8116121176298092),
                       Vec3(-0.27690590806481297, 0.29891325880994946, -0.91322175936976979), -1});
   }
-  EngineOptions scalar;
-  scalar.vectorPenumbra = false;
-  EngineOptions plain;
-  plain.culling = false;
-  const struct {
-    const char* name;
-    EngineOptions options;
-  } paths[] = {{"eight lanes", {}}, {"scalar", scalar}, {"plain", plain}};
+  const auto paths = penumbraPaths();
   for (const int boxes : {1, 4}) {
     const Scene scene = bezelScene(boxes);
     const std::vector<double> exact = exactIlluminance(scene, points)[0];
