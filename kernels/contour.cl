@@ -243,69 +243,114 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * interpolations keep E to a few roundings of itself as whole_face8 does; what is left is the
  * direction of the other ends, a rounding of the vectors from P each (docs/method.md, the
  * precision note). */
+/* A piece end two side planes cross at, in the lanes of the planar form, is the crossing of the
+ * two edges' lines in the face's plane (planar_crossing): the crossing direction of two side planes
+ * through P is good to a fraction of a rounding of a radian, but seen from e above the plane that
+ * moves its image on the plane by r/sin e times as much, where the two edges' lines in the plane
+ * are good to a rounding of their ends. An occluder's edge takes part where both its ends' rays
+ * meet the plane at a sine of PN_PLANAR_END_MIN or more, and two lines that cross at a sine below
+ * PN_PLANAR_CROSSING_MIN keep the side planes' direction. */
+#define PN_PLANAR_END_MIN 1e-3f
+#define PN_PLANAR_CROSSING_MIN 1e-4f
 #define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end goes to the sphere of radius |C| */
-#define PN_DEFINE_PIECE_FORM(T, M, S)                                                                \
-  typedef struct {                                                                                   \
-    const PnEmission* em;     /* how the face emits */                                               \
-    PnCentre##S centre;       /* its reference point, in the lanes of `small` */                     \
-    float4 plane;             /* the face's plane (unit normal N in xyz) */                          \
-    T height;                 /* N·C */                                                             \
-    M small;                  /* lanes where the face is small against its distance */               \
-    PnPlanarFrame##S* planar; /* in the lanes of planar_lanes (not small): the planar form */        \
-    M planar_lanes;                                                                                  \
-  } PnPieceForm##S;                                                                                  \
-  inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,           \
-                               T* oz) {                                                              \
-    const PnCentre##S* c = &form->centre;                                                            \
-    T s = form->height / (form->plane.x * px + form->plane.y * py + form->plane.z * pz);             \
-    T x = fma(px, s, -c->x), y = fma(py, s, -c->y), z = fma(pz, s, -c->z);                           \
-    M far = !(x * x + y * y + z * z <= PN_PIECE_FAR * c->norm2);                                     \
-    if (pn_any(far)) {                                                                               \
-      s = sqrt(c->norm2 / (px * px + py * py + pz * pz));                                            \
-      x = select(x, fma(px, s, -c->x), far);                                                         \
-      y = select(y, fma(py, s, -c->y), far);                                                         \
-      z = select(z, fma(pz, s, -c->z), far);                                                         \
-    }                                                                                                \
-    *ox = x;                                                                                         \
-    *oy = y;                                                                                         \
-    *oz = z;                                                                                         \
-  }                                                                                                  \
-  /* An end p (from P) of a piece taken by the planar form, in the lanes of `project` (an            \
-   * occluder's point or a crossing direction, not a point of S'), along its ray to the face's       \
-   * plane: p · h / (−N·p). An end whose ray does not meet the plane in front of P stays. */     \
-  inline void planar_point##S(const PnPieceForm##S* form, M project, T* px, T* py, T* pz) {          \
-    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                    \
-    const M use = project & (np < 0.0f);                                                             \
-    if (!pn_any(use)) return;                                                                        \
-    const T s = -form->planar->h / np;                                                               \
-    *px = select(*px, *px * s, use);                                                                 \
-    *py = select(*py, *py * s, use);                                                                 \
-    *pz = select(*pz, *pz * s, use);                                                                 \
-  }                                                                                                  \
-  /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small    \
-   * lanes only). In the lanes of form->planar_lanes by the planar form, the ends of project0 and    \
-   * project1 taken to the face's plane (planar_point) and the piece's Δψ added to the frame's sum \
-   * in the lanes of `use`. */                                                                       \
-  inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,         \
-                              T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz,     \
-                              M project0, M project1, M use) {                                       \
-    T relative = 0.0f;                                                                               \
-    if (pn_any(form->small))                                                                         \
-      relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);     \
-    if (pn_all(form->small)) return relative;                                                        \
-    T term = 0.0f;                                                                                   \
-    if (!pn_all(form->planar_lanes))                                                                 \
-      term = piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em);                      \
-    if (pn_any(form->planar_lanes)) {                                                                \
-      planar_point##S(form, project0, &p0x, &p0y, &p0z);                                             \
-      planar_point##S(form, project1, &p1x, &p1y, &p1z);                                             \
-      T dpsi;                                                                                        \
-      const T planar =                                                                               \
-          planar_term##S(p0x, p0y, p0z, p1x, p1y, p1z, form->planar, nx, ny, nz, form->em, &dpsi);   \
-      form->planar->dpsi_sum += select((T)(0.0f), dpsi, use & form->planar_lanes);                   \
-      term = select(term, planar, form->planar_lanes);                                               \
-    }                                                                                                \
-    return select(term, relative, form->small);                                                      \
+#define PN_DEFINE_PIECE_FORM(T, M, S)                                                                     \
+  typedef struct {                                                                                        \
+    const PnEmission* em;     /* how the face emits */                                                    \
+    PnCentre##S centre;       /* its reference point, in the lanes of `small` */                          \
+    float4 plane;             /* the face's plane (unit normal N in xyz) */                               \
+    T height;                 /* N·C */                                                                  \
+    M small;                  /* lanes where the face is small against its distance */                    \
+    PnPlanarFrame##S* planar; /* in the lanes of planar_lanes (not small): the planar form */             \
+    M planar_lanes;                                                                                       \
+  } PnPieceForm##S;                                                                                       \
+  inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,                \
+                               T* oz) {                                                                   \
+    const PnCentre##S* c = &form->centre;                                                                 \
+    T s = form->height / (form->plane.x * px + form->plane.y * py + form->plane.z * pz);                  \
+    T x = fma(px, s, -c->x), y = fma(py, s, -c->y), z = fma(pz, s, -c->z);                                \
+    M far = !(x * x + y * y + z * z <= PN_PIECE_FAR * c->norm2);                                          \
+    if (pn_any(far)) {                                                                                    \
+      s = sqrt(c->norm2 / (px * px + py * py + pz * pz));                                                 \
+      x = select(x, fma(px, s, -c->x), far);                                                              \
+      y = select(y, fma(py, s, -c->y), far);                                                              \
+      z = select(z, fma(pz, s, -c->z), far);                                                              \
+    }                                                                                                     \
+    *ox = x;                                                                                              \
+    *oy = y;                                                                                              \
+    *oz = z;                                                                                              \
+  }                                                                                                       \
+  /* An end p (from P) of a piece taken by the planar form, in the lanes of `project` (an                 \
+   * occluder's point or a crossing direction, not a point of S'), along its ray to the face's            \
+   * plane: p · h / (−N·p). An end whose ray does not meet the plane in front of P stays. */          \
+  inline void planar_point##S(const PnPieceForm##S* form, M project, T* px, T* py, T* pz) {               \
+    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                         \
+    const M use = project & (np < 0.0f);                                                                  \
+    if (!pn_any(use)) return;                                                                             \
+    const T s = -form->planar->h / np;                                                                    \
+    *px = select(*px, *px * s, use);                                                                      \
+    *py = select(*py, *py * s, use);                                                                      \
+    *pz = select(*pz, *pz * s, use);                                                                      \
+  }                                                                                                       \
+  /* An occluder edge's end p (from P) taken to the face's plane for planar_crossing, in the              \
+   * lanes where its ray meets the plane clearly in front of P (returned). */                             \
+  inline M planar_end##S(const PnPieceForm##S* form, T* px, T* py, T* pz) {                               \
+    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                         \
+    const M ok = np < -PN_PLANAR_END_MIN * sqrt(*px * *px + *py * *py + *pz * *pz);                       \
+    const T s = -form->planar->h / select((T)(-1.0f), np, ok);                                            \
+    *px *= s;                                                                                             \
+    *py *= s;                                                                                             \
+    *pz *= s;                                                                                             \
+    return ok;                                                                                            \
+  }                                                                                                       \
+  /* Where two boundary edges cross, the point in the face's plane: the line a1 → b1 (the edge of       \
+   * the lower plane id) meets the line a2 → b2, both in the plane (a face's edge, or an                \
+   * occluder's edge through planar_end), at a1 + t (b1 − a1), t = ((a2 − a1) × v)·N / (u × v)·N. \
+   * Set in *p in the lanes of `use` where the lines are not near parallel (returned). Both edges         \
+   * that meet there compute it from the same ends in the same order, so they get the same point.         \
+   */                                                                                                     \
+  inline M planar_crossing##S(const PnPieceForm##S* form, T a1x, T a1y, T a1z, T b1x, T b1y,              \
+                              T b1z, T a2x, T a2y, T a2z, T b2x, T b2y, T b2z, M use, T* px,              \
+                              T* py, T* pz) {                                                             \
+    const float3 N = form->plane.xyz;                                                                     \
+    const T ux = b1x - a1x, uy = b1y - a1y, uz = b1z - a1z;                                               \
+    const T vx = b2x - a2x, vy = b2y - a2y, vz = b2z - a2z;                                               \
+    const T wx = a2x - a1x, wy = a2y - a1y, wz = a2z - a1z;                                               \
+    const T den =                                                                                         \
+        N.x * (uy * vz - uz * vy) + N.y * (uz * vx - ux * vz) + N.z * (ux * vy - uy * vx);                \
+    const T num =                                                                                         \
+        N.x * (wy * vz - wz * vy) + N.y * (wz * vx - wx * vz) + N.z * (wx * vy - wy * vx);                \
+    const M ok = use & (fabs(den) > PN_PLANAR_CROSSING_MIN * sqrt((ux * ux + uy * uy + uz * uz) *         \
+                                                                  (vx * vx + vy * vy + vz * vz)));        \
+    const T t = num / select((T)(1.0f), den, ok);                                                         \
+    *px = select(*px, a1x + t * ux, ok);                                                                  \
+    *py = select(*py, a1y + t * uy, ok);                                                                  \
+    *pz = select(*pz, a1z + t * uz, ok);                                                                  \
+    return ok;                                                                                            \
+  }                                                                                                       \
+  /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small         \
+   * lanes only). In the lanes of form->planar_lanes by the planar form, the ends of project0 and         \
+   * project1 taken to the face's plane (planar_point) and the piece's Δψ added to the frame's sum      \
+   * in the lanes of `use`. */                                                                            \
+  inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,              \
+                              T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz,          \
+                              M project0, M project1, M use) {                                            \
+    T relative = 0.0f;                                                                                    \
+    if (pn_any(form->small))                                                                              \
+      relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);          \
+    if (pn_all(form->small)) return relative;                                                             \
+    T term = 0.0f;                                                                                        \
+    if (!pn_all(form->planar_lanes))                                                                      \
+      term = piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em);                           \
+    if (pn_any(form->planar_lanes)) {                                                                     \
+      planar_point##S(form, project0, &p0x, &p0y, &p0z);                                                  \
+      planar_point##S(form, project1, &p1x, &p1y, &p1z);                                                  \
+      T dpsi;                                                                                             \
+      const T planar =                                                                                    \
+          planar_term##S(p0x, p0y, p0z, p1x, p1y, p1z, form->planar, nx, ny, nz, form->em, &dpsi);        \
+      form->planar->dpsi_sum += select((T)(0.0f), dpsi, use & form->planar_lanes);                        \
+      term = select(term, planar, form->planar_lanes);                                                    \
+    }                                                                                                     \
+    return select(term, relative, form->small);                                                           \
   }
 
 #define PN_DEFINE_CONTOUR_TWINS(T, M, S) \

@@ -66,11 +66,13 @@ typedef struct {
 typedef struct {
   float8 x, y, z;
   int8 set;
+  int8 id; /* the other plane's id, where set */
 } PieceEnd8;
 
 inline void piece_end_clear8(PieceEnd8* e) {
   e->x = e->y = e->z = 0.0f;
   e->set = 0;
+  e->id = -1;
 }
 
 /* The side planes' ids in eight lanes: S' edges 0 … m − 1, the chord m, then the contour store. */
@@ -100,13 +102,68 @@ inline void crossing_ends8(float8 msx, float8 msy, float8 msz, int self, const E
     e0->y = select(e0->y, dy, at0);
     e0->z = select(e0->z, dz, at0);
     e0->set |= at0;
+    e0->id = select(e0->id, (int8)(id), at0);
     e1->x = select(e1->x, dx, at1);
     e1->y = select(e1->y, dy, at1);
     e1->z = select(e1->z, dz, at1);
     e1->set |= at1;
+    e1->id = select(e1->id, (int8)(id), at1);
     left0 &= ~at0;
     left1 &= ~at1;
   }
+}
+
+/* S' as planar_crossing8 reads its edges: edge i < m from vertex i to i + 1, edge m the horizon
+ * chord (penumbra_lanes.cl's SourcePolygon8). */
+typedef struct {
+  const float8 *x, *y, *z;
+  const HorizonChord8* chord;
+  int m;
+} SourceRing8;
+
+/* The ends of the boundary edge of plane id in the face's plane: an S' edge as it is (its ends are
+ * there), a contour edge's through planar_end8 (the lanes where both ends' rays meet the plane are
+ * returned). */
+inline int8 planar_edge8(const PnPieceForm8* form, const SourceRing8* ring, const Contours8* cs,
+                         int id, float8* ax, float8* ay, float8* az, float8* bx, float8* by,
+                         float8* bz) {
+  if (id >= PN_VEC_ID_CONTOUR) {
+    const ContourEdge8* e = &cs->edge[id - PN_VEC_ID_CONTOUR];
+    *ax = e->ax, *ay = e->ay, *az = e->az, *bx = e->bx, *by = e->by, *bz = e->bz;
+    return planar_end8(form, ax, ay, az) & planar_end8(form, bx, by, bz);
+  }
+  if (id == ring->m) {
+    *ax = ring->chord->exit_x, *ay = ring->chord->exit_y, *az = ring->chord->exit_z;
+    *bx = ring->chord->entry_x, *by = ring->chord->entry_y, *bz = ring->chord->entry_z;
+  } else {
+    const int j = id + 1 == ring->m ? 0 : id + 1;
+    *ax = ring->x[id], *ay = ring->y[id], *az = ring->z[id];
+    *bx = ring->x[j], *by = ring->y[j], *bz = ring->z[j];
+  }
+  return -1;
+}
+
+/* In the lanes of `use`, the piece end p where the edge of plane id `self` meets the edge of plane
+ * end->id, as their lines' crossing in the face's plane (planar_crossing8), once per distinct
+ * other plane among the lanes. Returns the lanes whose end it set. */
+inline int8 planar_crossings8(const PnPieceForm8* form, const SourceRing8* ring,
+                              const Contours8* cs, int self, const PieceEnd8* end, int8 use,
+                              float8* px, float8* py, float8* pz) {
+  int8 done = 0;
+  int8 left = use & (end->id >= 0);
+  while (pn_any(left)) {
+    const int other = __builtin_reduce_min(select((int8)(INT_MAX), end->id, left));
+    const int8 at = left & (end->id == other);
+    left &= ~at;
+    float8 a1x, a1y, a1z, b1x, b1y, b1z, a2x, a2y, a2z, b2x, b2y, b2z;
+    const int lo = min(self, other), hi = max(self, other);
+    int8 ok = at & planar_edge8(form, ring, cs, lo, &a1x, &a1y, &a1z, &b1x, &b1y, &b1z);
+    ok &= planar_edge8(form, ring, cs, hi, &a2x, &a2y, &a2z, &b2x, &b2y, &b2z);
+    if (!pn_any(ok)) continue;
+    done |= planar_crossing8(form, a1x, a1y, a1z, b1x, b1y, b1z, a2x, a2y, a2z, b2x, b2y, b2z, ok,
+                             px, py, pz);
+  }
+  return done;
 }
 
 /* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
@@ -117,7 +174,8 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
                         float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
                         const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
                         float8 nx, float8 ny, float8 nz, const PnPieceForm8* form,
-                        const ContourEdge8* offsets, const Contours8* cs, PnSum8* acc) {
+                        const ContourEdge8* offsets, const Contours8* cs, const SourceRing8* ring,
+                        PnSum8* acc) {
   if (!pn_any(on)) return;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -227,8 +285,17 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       stop.y = select(stop.y, e0[w].y, at);
       stop.z = select(stop.z, e0[w].z, at);
       stop.set = select(stop.set, e0[w].set, at);
+      stop.id = select(stop.id, e0[w].id, at);
     }
     const int8 turned1 = turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
+    /* In the planar form's lanes the turned ends are the edges' crossing in the plane. */
+    int8 crossed0 = 0, crossed1 = 0;
+    if (pn_any(form->planar_lanes & (turned0 | turned1))) {
+      crossed0 = planar_crossings8(form, ring, cs, self, start_end, form->planar_lanes & turned0,
+                                   &p0x, &p0y, &p0z);
+      crossed1 = planar_crossings8(form, ring, cs, self, &stop, form->planar_lanes & turned1, &p1x,
+                                   &p1y, &p1z);
+    }
     float8 o0x = 0.0f, o0y = 0.0f, o0z = 0.0f, o1x = 0.0f, o1y = 0.0f, o1z = 0.0f;
     if (pn_any(form->small)) {
       centre_offset8(form, p0x, p0y, p0z, &o0x, &o0y, &o0z);
@@ -243,8 +310,10 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
         o1z = select(o1z, edge_point8(offsets->az, offsets->bz, end), keep1);
       }
     }
-    /* An occluder's piece (no offsets) is off the face's plane; so are turned ends. */
-    const int8 off0 = offsets ? turned0 : (int8)(-1), off1 = offsets ? turned1 : (int8)(-1);
+    /* An occluder's piece (no offsets) is off the face's plane; so are turned ends, but for the
+     * crossings found in it. */
+    const int8 off0 = (offsets ? turned0 : (int8)(-1)) & ~crossed0,
+               off1 = (offsets ? turned1 : (int8)(-1)) & ~crossed1;
     float8 term = form_piece_term8(form, p0x, p0y, p0z, p1x, p1y, p1z, o0x, o0y, o0z, o1x, o1y, o1z,
                                    nx, ny, nz, off0, off1, valid);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));

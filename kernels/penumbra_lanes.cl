@@ -372,11 +372,18 @@ void snap_tied_vertices8(Contours8* cs, const SourcePolygon8* s) {
   }
 }
 
+/* S''s edges as planar_crossings8 reads them. */
+inline SourceRing8 source_ring8(const SourcePolygon8* s) {
+  const SourceRing8 ring = {s->x, s->y, s->z, &s->chord, s->m};
+  return ring;
+}
+
 /* Boundary part (a): the source's edges above the horizon, and the chord. Their ends are vertices
  * or on the horizon, where the edge and the chord compute the same point. */
 void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
                        PnSum8* sum) {
   const int m = s->m;
+  const SourceRing8 ring = source_ring8(s);
   PieceEnd8 none;
   piece_end_clear8(&none);
   for (int i = 0; i < m; ++i) {
@@ -388,7 +395,7 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
                                   s->oy[j], s->oz[j], s->exact};
     visible_edge_term8(s->x[i], s->y[i], s->z[i], s->x[j], s->y[j], s->z[j], s->side[i].mx,
                        s->side[i].my, s->side[i].mz, i, lo, hi, &none, &none, lanes & (a_in | b_in),
-                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, cs, sum);
+                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, cs, &ring, sum);
   }
   const HorizonChord8* chord = &s->chord;
   const HorizonChord8* oc = &s->chord_offset;
@@ -397,13 +404,14 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
   visible_edge_term8(chord->exit_x, chord->exit_y, chord->exit_z, chord->entry_x, chord->entry_y,
                      chord->entry_z, s->side[m].mx, s->side[m].my, s->side[m].mz, m, (float8)(0.0f),
                      (float8)(1.0f), &none, &none, lanes & s->cut, -1, pts->nx, pts->ny, pts->nz,
-                     &s->form, &offsets, cs, sum);
+                     &s->form, &offsets, cs, &ring, sum);
 }
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
 void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
                       PnSum8* sum, int8* tied_lanes) {
   const int m = s->m;
+  const SourceRing8 ring = source_ring8(s);
   for (int u = 0; u < cs->count; ++u)
     for (int k = cs->first_edge[u]; k < cs->first_edge[u + 1]; ++k) {
       const ContourEdge8* e = &cs->edge[k];
@@ -434,7 +442,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
                      &lo_end, &hi_end);
       visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
                          PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, pts->nx, pts->ny,
-                         pts->nz, &s->form, 0, cs, sum);
+                         pts->nz, &s->form, 0, cs, &ring, sum);
     }
 }
 

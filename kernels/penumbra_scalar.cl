@@ -151,6 +151,38 @@ inline float3 plane_of(const PenumbraState* st, int id) {
   return id < PN_ID_CONTOUR ? st->source_side[id] : st->contour_side[id - PN_ID_CONTOUR];
 }
 
+/* The ends of the boundary edge of plane id in the face's plane: an S' edge as it is (its ends are
+ * there), a contour edge's through planar_end1; false where an end's ray does not meet the plane
+ * clearly (contour.cl, planar_crossing). */
+inline bool planar_edge(const PenumbraState* st, int id, float3* a, float3* b) {
+  if (id < PN_ID_CONTOUR) {
+    *a = st->source[id];
+    *b = st->source[id + 1 == st->source_count ? 0 : id + 1];
+    return true;
+  }
+  const float3 c = st->contour_a[id - PN_ID_CONTOUR], d = st->contour_b[id - PN_ID_CONTOUR];
+  float ax = c.x, ay = c.y, az = c.z, bx = d.x, by = d.y, bz = d.z;
+  const bool ok = planar_end1(&st->form, &ax, &ay, &az) && planar_end1(&st->form, &bx, &by, &bz);
+  *a = (float3)(ax, ay, az);
+  *b = (float3)(bx, by, bz);
+  return ok;
+}
+
+/* The piece end p where the edges of planes self and other cross, as their lines' crossing in the
+ * face's plane where the planar form serves (contour.cl, planar_crossing); *crossed says whether it
+ * is. */
+inline float3 planar_crossing_point(const PenumbraState* st, int self, int other, float3 p,
+                                    int* crossed) {
+  *crossed = 0;
+  float3 a1, b1, a2, b2;
+  if (!planar_edge(st, min(self, other), &a1, &b1) || !planar_edge(st, max(self, other), &a2, &b2))
+    return p;
+  float x = p.x, y = p.y, z = p.z;
+  *crossed = planar_crossing1(&st->form, a1.x, a1.y, a1.z, b1.x, b1.y, b1.z, a2.x, a2.y, a2.z, b2.x,
+                              b2.y, b2.z, 1, &x, &y, &z);
+  return (float3)(x, y, z);
+}
+
 /* Whether an occluder edge of side normal m_self, lengths la and lb, whose ends lie at -f0 and -f1
  * along S' side plane i's normal, is tied to S' edge i (the tie rule, contour.cl): it lies in
  * that edge's side plane, and that edge in its own. */
@@ -264,13 +296,21 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
       p0 = crossing_point(m_self, self, plane_of(st, lo_id[k]), lo_id[k], p0, &turned0);
     if (hi_id[k] != PN_ID_VERTEX)
       p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1, &turned1);
+    /* In the planar form the turned ends are the edges' crossing in the plane. */
+    int crossed0 = 0, crossed1 = 0;
+    if (st->form.planar_lanes && turned0)
+      p0 = planar_crossing_point(st, self, lo_id[k], p0, &crossed0);
+    if (st->form.planar_lanes && turned1)
+      p1 = planar_crossing_point(st, self, hi_id[k], p1, &crossed1);
     float3 o0 = 0.0f, o1 = 0.0f;
     if (st->form.small) {
       o0 = exact && !turned0 ? edge_point(oa, ob, lo[k]) : centre_offset(&st->form, p0);
       o1 = exact && !turned1 ? edge_point(oa, ob, hi[k]) : centre_offset(&st->form, p1);
     }
-    /* An occluder's piece is off the face's plane; so are turned ends. */
-    const int off0 = owner >= 0 || turned0, off1 = owner >= 0 || turned1;
+    /* An occluder's piece is off the face's plane; so are turned ends, but for the crossings found
+     * in it. */
+    const int off0 = (owner >= 0 || turned0) && !crossed0;
+    const int off1 = (owner >= 0 || turned1) && !crossed1;
     pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n, off0, off1));
   }
 }
