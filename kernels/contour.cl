@@ -262,6 +262,8 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     M small;                  /* lanes where the face is small against its distance */                    \
     PnPlanarFrame##S* planar; /* in the lanes of planar_lanes (not small): the planar form */             \
     M planar_lanes;                                                                                       \
+    M crossing_lanes; /* planar_lanes, and the band above it where crossings are taken in the             \
+                         plane */                                                                         \
   } PnPieceForm##S;                                                                                       \
   inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,                \
                                T* oz) {                                                                   \
@@ -296,10 +298,7 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
   inline M planar_end##S(const PnPieceForm##S* form, T* px, T* py, T* pz) {                               \
     const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                         \
     const M ok = np < -PN_PLANAR_END_MIN * sqrt(*px * *px + *py * *py + *pz * *pz);                       \
-    const T s = -form->planar->h / select((T)(-1.0f), np, ok);                                            \
-    *px *= s;                                                                                             \
-    *py *= s;                                                                                             \
-    *pz *= s;                                                                                             \
+    planar_point##S(form, ok, px, py, pz);                                                                \
     return ok;                                                                                            \
   }                                                                                                       \
   /* Where two boundary edges cross, the point in the face's plane: the line a1 → b1 (the edge of       \

@@ -301,7 +301,7 @@ inline float8 whole_face8(const Points8* pts, PnSourceFace face, const PnSceneTa
   int k = 0;
   int8 small_lanes = 0;
   const bool any_small = small_face8(pts, face, tables, ax, ay, az, &centre, &k, &small_lanes);
-  if (pn_any(planar_lanes8(face, &em, ax, ay, az) & ~small_lanes)) {
+  if (pn_any(planar_lanes8(face, &em, ax, ay, az, false) & ~small_lanes)) {
     *cut = true; /* unoccluded_face8 takes the planar form where it serves */
     return 0.0f;
   }
@@ -371,7 +371,7 @@ inline float8 unoccluded_face8(const Points8* pts, PnSourceFace face, const PnSc
   int8 small_lanes = 0;
   float8 ax, ay, az;
   pn_from8(tables->sourceVertices[face.firstVertex], pts, &ax, &ay, &az);
-  const int8 planar = planar_lanes8(face, &em, ax, ay, az);
+  const int8 planar = planar_lanes8(face, &em, ax, ay, az, false);
   if (!small_face8(pts, face, tables, ax, ay, az, &small, &k, &small_lanes))
     return large_face8(pts, face, tables, &em, planar);
   const float8 e_small = horizon_face8(pts, face, tables, &small, k, &em, 0);

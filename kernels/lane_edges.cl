@@ -288,13 +288,13 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
       stop.id = select(stop.id, e0[w].id, at);
     }
     const int8 turned1 = turn_to_point8(stop.x, stop.y, stop.z, stop.set, &p1x, &p1y, &p1z);
-    /* In the planar form's lanes the turned ends are the edges' crossing in the plane. */
+    /* In the crossing lanes the turned ends are the edges' crossing in the face's plane. */
     int8 crossed0 = 0, crossed1 = 0;
-    if (pn_any(form->planar_lanes & (turned0 | turned1))) {
-      crossed0 = planar_crossings8(form, ring, cs, self, start_end, form->planar_lanes & turned0,
+    if (pn_any(form->crossing_lanes & (turned0 | turned1))) {
+      crossed0 = planar_crossings8(form, ring, cs, self, start_end, form->crossing_lanes & turned0,
                                    &p0x, &p0y, &p0z);
-      crossed1 = planar_crossings8(form, ring, cs, self, &stop, form->planar_lanes & turned1, &p1x,
-                                   &p1y, &p1z);
+      crossed1 = planar_crossings8(form, ring, cs, self, &stop, form->crossing_lanes & turned1,
+                                   &p1x, &p1y, &p1z);
     }
     float8 o0x = 0.0f, o0y = 0.0f, o0z = 0.0f, o1x = 0.0f, o1y = 0.0f, o1z = 0.0f;
     if (pn_any(form->small)) {

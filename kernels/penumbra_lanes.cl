@@ -30,7 +30,7 @@ typedef struct {
   int m;                 /* the face's vertex count */
   PnEmission emission;   /* how the face emits (luminance_moments.cl) */
   PnPieceForm8 form;     /* how its pieces are integrated (contour.cl), reading `emission` */
-  PnPlanarFrame8 planar; /* the face's planar frame, where form.planar_lanes has a lane */
+  PnPlanarFrame8 planar; /* the face's planar frame, where form.crossing_lanes has a lane */
 } SourcePolygon8;
 
 /* Fills S' for the lanes in `asked` and returns those that see the face: in front of it and not
@@ -57,8 +57,9 @@ int8 source_polygon8(SourcePolygon8* s, const Points8* pts, int8 asked, const Fa
   /* The planar form where the lanes see the face near its plane (planar_term.cl), as
    * unoccluded_face8 takes it. */
   s->form.planar = &s->planar;
-  s->form.planar_lanes = planar_lanes8(face, &s->emission, x0, y0, z0) & ~s->form.small;
-  if (pn_any(s->form.planar_lanes)) s->planar = planar_frame8(pts, face, tables);
+  s->form.planar_lanes = planar_lanes8(face, &s->emission, x0, y0, z0, false) & ~s->form.small;
+  s->form.crossing_lanes = planar_lanes8(face, &s->emission, x0, y0, z0, true) & ~s->form.small;
+  if (pn_any(s->form.crossing_lanes)) s->planar = planar_frame8(pts, face, tables);
   for (int i = 0; i < m; ++i) {
     pn_from8(tables->sourceVertices[face.firstVertex + i], pts, &s->x[i], &s->y[i], &s->z[i]);
     if (pn_any(fv->view.use)) {

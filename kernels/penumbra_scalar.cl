@@ -29,7 +29,7 @@ typedef struct {
   int active_count;
   PnEmission emission;   /* how the face emits (luminance_moments.cl) */
   PnPieceForm1 form;     /* how its pieces are integrated (contour.cl), reading `emission` */
-  PnPlanarFrame1 planar; /* the face's planar frame, where form.planar_lanes is set */
+  PnPlanarFrame1 planar; /* the face's planar frame, where form.crossing_lanes is set */
   bool tie_seen;         /* an occluder's edge was tied to an S' edge (contour_sum) */
 } PenumbraState;
 
@@ -298,9 +298,9 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
       p1 = crossing_point(m_self, self, plane_of(st, hi_id[k]), hi_id[k], p1, &turned1);
     /* In the planar form the turned ends are the edges' crossing in the plane. */
     int crossed0 = 0, crossed1 = 0;
-    if (st->form.planar_lanes && turned0)
+    if (st->form.crossing_lanes && turned0)
       p0 = planar_crossing_point(st, self, lo_id[k], p0, &crossed0);
-    if (st->form.planar_lanes && turned1)
+    if (st->form.crossing_lanes && turned1)
       p1 = planar_crossing_point(st, self, hi_id[k], p1, &crossed1);
     float3 o0 = 0.0f, o1 = 0.0f;
     if (st->form.small) {
@@ -447,8 +447,11 @@ bool source_polygon(PenumbraState* st, float3 p, float3 p_lo, float3 n, PnSource
   /* The planar form where P sees the face near its plane, as the lanes take it. */
   const float3 v0 = pn_from1(tables->sourceVertices[face.firstVertex], p, p_lo);
   st->form.planar = &st->planar;
-  st->form.planar_lanes = !st->form.small && planar_lanes1(face, &st->emission, v0.x, v0.y, v0.z);
-  if (st->form.planar_lanes)
+  st->form.planar_lanes =
+      !st->form.small && planar_lanes1(face, &st->emission, v0.x, v0.y, v0.z, false);
+  st->form.crossing_lanes =
+      !st->form.small && planar_lanes1(face, &st->emission, v0.x, v0.y, v0.z, true);
+  if (st->form.crossing_lanes)
     st->planar =
         planar_frame_at1(p.x, p.y, p.z, p_lo.x, p_lo.y, p_lo.z, n.x, n.y, n.z, face, tables);
   if (aperture) {

@@ -48,19 +48,23 @@ inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
  * 30° for a polynomial (PN_PLANAR_SINE), whose higher powers' terms lose more (measured by
  * tests/near_plane_test.cpp: at 20-30° with Lambert's terms, up to 8e-6 of E uniform and 2.0e-5
  * for a power 9). The planar form at 20-30° costs a work plane under ceiling panels a third more
- * kernel time. From vertex 0's offset, as every other choice of form: a lane's E does not depend
- * on the scene's origin (the positions' hi/lo split), nor on the lanes beside it, and both
- * penumbra paths switch where the unoccluded path does. */
+ * kernel time. The penumbra paths take the crossings of their visible contour's edges in the
+ * plane (`crossings`: contour.cl, planar_crossing) up to 30° for every luminance: at 20-25° past a
+ * bezel, the side planes' crossing directions moved E by up to 2.3e-5 of the unoccluded E, the
+ * lines' crossings in the plane by 6.5e-6. From vertex 0's offset, as every other choice of form:
+ * a lane's E does not depend on the scene's origin (the positions' hi/lo split), nor on the lanes
+ * beside it, and every path switches alike. */
 #define PN_PLANAR_SINE_UNIFORM 0.35f
 #define PN_PLANAR_SINE 0.5f
 
 /* What the planar form needs of a face per lane: P's height h above the face's plane, n·N, the
  * plane's normal N, and the running sum of the edges' Δψ. */
 #define PN_DEFINE_PLANAR_FRAME(T, M, S, Sum, add)                                                     \
-  inline M planar_lanes##S(PnSourceFace face, const PnEmission* em, T x, T y, T z) {                  \
+  inline M planar_lanes##S(PnSourceFace face, const PnEmission* em, T x, T y, T z,                    \
+                           bool crossings) {                                                          \
     if (!planar_emission(face, em)) return (M)(0);                                                    \
     const T h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);                            \
-    const float sine = em->order <= 0 ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;                      \
+    const float sine = em->order <= 0 && !crossings ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;        \
     return h * h < sine * sine * (x * x + y * y + z * z);                                             \
   }                                                                                                   \
   typedef struct {                                                                                    \
