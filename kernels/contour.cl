@@ -21,26 +21,25 @@
 #include "occluders.cl"
 
 /* The contour edge e of an active occluder, hole-oriented, relative to P (p and p_lo: its hi and
- * lo parts, PnPosition): an edge between a face that sees P and one that does not. False when e
+ * lo parts, PnPosition), and its ends' positions in *qa, *qb: an edge between a face that sees P
+ * and one that does not. False when e
  * is not on the contour. Whether a face sees P is tested per edge rather than kept in a bit mask,
  * so that a solid may have any number of faces (a finely faceted sphere has hundreds). */
 inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSceneTables* tables,
-                         float eps_length, float3* a, float3* b) {
+                         float eps_length, float3* a, float3* b, PnPosition* qa, PnPosition* qb) {
   int4 ed = tables->edges[o.firstEdge + e];
   bool left_front = face_sees1(o, ed.z, tables, p.x, p.y, p.z, eps_length);
   bool right_front = face_sees1(o, ed.w, tables, p.x, p.y, p.z, eps_length);
   if (left_front == right_front) return false;
   /* Run it as the face that does not see P does: that face's loop goes from -> to when it is
    * the left face. */
-  float3 from = pn_from1(tables->occluderVertices[o.firstVertex + ed.x], p, p_lo);
-  float3 to = pn_from1(tables->occluderVertices[o.firstVertex + ed.y], p, p_lo);
-  if (left_front) {
-    *a = to;
-    *b = from;
-  } else {
-    *a = from;
-    *b = to;
-  }
+  const PnPosition q_from = tables->occluderVertices[o.firstVertex + ed.x];
+  const PnPosition q_to = tables->occluderVertices[o.firstVertex + ed.y];
+  const float3 from = pn_from1(q_from, p, p_lo), to = pn_from1(q_to, p, p_lo);
+  *a = left_front ? to : from;
+  *b = left_front ? from : to;
+  *qa = left_front ? q_to : q_from;
+  *qb = left_front ? q_from : q_to;
   return true;
 }
 
@@ -249,9 +248,15 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
  * moves its image on the plane by r/sin e times as much, where the two edges' lines in the plane
  * are good to a rounding of their ends. An occluder's edge takes part where both its ends' rays
  * meet the plane at a sine of PN_PLANAR_END_MIN or more, and two lines that cross at a sine below
- * PN_PLANAR_CROSSING_MIN keep the side planes' direction. */
+ * PN_PLANAR_CROSSING_MIN keep the side planes' direction. Which edges meet is still decided by
+ * the side planes, whose rounding moves a decision's place on the plane by about u |p|² / h (u
+ * |p| / sin e from e above it): a crossing within PN_PLANAR_SNAP |p|² / h of an end of either
+ * line (four such roundings) is that end, so that where an edge passes that close to another
+ * edge's end, the edges meeting there close the contour whichever of them the side planes chose.
+ * Moving a true crossing by that much moves E by less than the rounding that blurs the choice. */
 #define PN_PLANAR_END_MIN 1e-3f
 #define PN_PLANAR_CROSSING_MIN 1e-4f
+#define PN_PLANAR_SNAP 2.4e-7f
 #define PN_PIECE_FAR 4.0f /* |α|² / |C|² beyond which an end goes to the sphere of radius |C| */
 #define PN_DEFINE_PIECE_FORM(T, M, S)                                                                     \
   typedef struct {                                                                                        \
@@ -265,6 +270,12 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     M crossing_lanes; /* planar_lanes, and the band above it where crossings are taken in the             \
                          plane */                                                                         \
   } PnPieceForm##S;                                                                                       \
+  /* A boundary edge's ends in the face's plane (planar_crossing), and the lanes where each is            \
+   * there. */                                                                                            \
+  typedef struct {                                                                                        \
+    T ax, ay, az, bx, by, bz;                                                                             \
+    M a_in, b_in;                                                                                         \
+  } PnPlanarLine##S;                                                                                      \
   inline void centre_offset##S(const PnPieceForm##S* form, T px, T py, T pz, T* ox, T* oy,                \
                                T* oz) {                                                                   \
     const PnCentre##S* c = &form->centre;                                                                 \
@@ -281,11 +292,16 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     *oy = y;                                                                                              \
     *oz = z;                                                                                              \
   }                                                                                                       \
+  /* N·p for an end p (from P): what planar_point and planar_end read where no rounder figure of         \
+   * N·p is known (planar_depth, for an occluder's vertex). */                                           \
+  inline T plane_dot##S(const PnPieceForm##S* form, T px, T py, T pz) {                                   \
+    return form->plane.x * px + form->plane.y * py + form->plane.z * pz;                                  \
+  }                                                                                                       \
   /* An end p (from P) of a piece taken by the planar form, in the lanes of `project` (an                 \
    * occluder's point or a crossing direction, not a point of S'), along its ray to the face's            \
-   * plane: p · h / (−N·p). An end whose ray does not meet the plane in front of P stays. */          \
-  inline void planar_point##S(const PnPieceForm##S* form, M project, T* px, T* py, T* pz) {               \
-    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                         \
+   * plane: p · h / (−np), np = N·p. An end whose ray does not meet the plane in front of P stays.    \
+   */                                                                                                     \
+  inline void planar_point##S(const PnPieceForm##S* form, M project, T np, T* px, T* py, T* pz) {         \
     const M use = project & (np < 0.0f);                                                                  \
     if (!pn_any(use)) return;                                                                             \
     const T s = -form->planar->h / np;                                                                    \
@@ -293,24 +309,35 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     *py = select(*py, *py * s, use);                                                                      \
     *pz = select(*pz, *pz * s, use);                                                                      \
   }                                                                                                       \
-  /* An occluder edge's end p (from P) taken to the face's plane for planar_crossing, in the              \
-   * lanes where its ray meets the plane clearly in front of P (returned). */                             \
-  inline M planar_end##S(const PnPieceForm##S* form, T* px, T* py, T* pz) {                               \
-    const T np = form->plane.x * *px + form->plane.y * *py + form->plane.z * *pz;                         \
+  /* An occluder edge's end p (from P, np = N·p) taken to the face's plane for planar_crossing, in       \
+   * the lanes where its ray meets the plane clearly in front of P (returned). */                         \
+  inline M planar_end##S(const PnPieceForm##S* form, T np, T* px, T* py, T* pz) {                         \
     const M ok = np < -PN_PLANAR_END_MIN * sqrt(*px * *px + *py * *py + *pz * *pz);                       \
-    planar_point##S(form, ok, px, py, pz);                                                                \
+    planar_point##S(form, ok, np, px, py, pz);                                                            \
     return ok;                                                                                            \
+  }                                                                                                       \
+  /* *p moved to v in the lanes of `use` where c is within √reach2 of v (returned). */                  \
+  inline M snap_to##S(T cx, T cy, T cz, T vx, T vy, T vz, M use, T reach2, T* px, T* py, T* pz) {         \
+    const T dx = cx - vx, dy = cy - vy, dz = cz - vz;                                                     \
+    const M at = use & (dx * dx + dy * dy + dz * dz < reach2);                                            \
+    *px = select(*px, vx, at);                                                                            \
+    *py = select(*py, vy, at);                                                                            \
+    *pz = select(*pz, vz, at);                                                                            \
+    return at;                                                                                            \
   }                                                                                                       \
   /* Where two boundary edges cross, the point in the face's plane: the line a1 → b1 (the edge of       \
    * the lower plane id) meets the line a2 → b2, both in the plane (a face's edge, or an                \
-   * occluder's edge through planar_end), at a1 + t (b1 − a1), t = ((a2 − a1) × v)·N / (u × v)·N. \
-   * Set in *p in the lanes of `use` where the lines are not near parallel (returned). Both edges         \
-   * that meet there compute it from the same ends in the same order, so they get the same point.         \
-   */                                                                                                     \
-  inline M planar_crossing##S(const PnPieceForm##S* form, T a1x, T a1y, T a1z, T b1x, T b1y,              \
-                              T b1z, T a2x, T a2y, T a2z, T b2x, T b2y, T b2z, M use, T* px,              \
-                              T* py, T* pz) {                                                             \
+   * occluder's edge through planar_end), at a1 + t (b1 − a1), t = ((a2 − a1) × v)·N / (u × v)·N, \
+   * or, within PN_PLANAR_SNAP |p|² / h of an end of either line that lies in the plane, that end.       \
+   * Where the lines are near parallel or an end is not in the plane (an edge seen end-on), the           \
+   * crossing direction *p taken to the plane, if that is within the same reach of an end, is that        \
+   * end; elsewhere *p stays a direction. Both edges that meet there compute it from the same ends        \
+   * in the same order, so they get the same point. Set in *p in the lanes of `use` returned. */          \
+  inline M planar_crossing##S(const PnPieceForm##S* form, const PnPlanarLine##S* l1,                      \
+                              const PnPlanarLine##S* l2, M use, T* px, T* py, T* pz) {                    \
     const float3 N = form->plane.xyz;                                                                     \
+    const T a1x = l1->ax, a1y = l1->ay, a1z = l1->az, b1x = l1->bx, b1y = l1->by, b1z = l1->bz;           \
+    const T a2x = l2->ax, a2y = l2->ay, a2z = l2->az, b2x = l2->bx, b2y = l2->by, b2z = l2->bz;           \
     const T ux = b1x - a1x, uy = b1y - a1y, uz = b1z - a1z;                                               \
     const T vx = b2x - a2x, vy = b2y - a2y, vz = b2z - a2z;                                               \
     const T wx = a2x - a1x, wy = a2y - a1y, wz = a2z - a1z;                                               \
@@ -318,21 +345,38 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
         N.x * (uy * vz - uz * vy) + N.y * (uz * vx - ux * vz) + N.z * (ux * vy - uy * vx);                \
     const T num =                                                                                         \
         N.x * (wy * vz - wz * vy) + N.y * (wz * vx - wx * vz) + N.z * (wx * vy - wy * vx);                \
-    const M ok = use & (fabs(den) > PN_PLANAR_CROSSING_MIN * sqrt((ux * ux + uy * uy + uz * uz) *         \
-                                                                  (vx * vx + vy * vy + vz * vz)));        \
+    const M lines = use & l1->a_in & l1->b_in & l2->a_in & l2->b_in;                                      \
+    const M ok =                                                                                          \
+        lines & (fabs(den) > PN_PLANAR_CROSSING_MIN * sqrt((ux * ux + uy * uy + uz * uz) *                \
+                                                           (vx * vx + vy * vy + vz * vz)));               \
     const T t = num / select((T)(1.0f), den, ok);                                                         \
-    *px = select(*px, a1x + t * ux, ok);                                                                  \
-    *py = select(*py, a1y + t * uy, ok);                                                                  \
-    *pz = select(*pz, a1z + t * uz, ok);                                                                  \
-    return ok;                                                                                            \
+    T x = *px, y = *py, z = *pz;                                                                          \
+    const T np = plane_dot##S(form, x, y, z);                                                             \
+    const M direction = use & !ok & (np < 0.0f);                                                          \
+    planar_point##S(form, direction, np, &x, &y, &z);                                                     \
+    x = select(x, a1x + t * ux, ok), y = select(y, a1y + t * uy, ok),                                     \
+    z = select(z, a1z + t * uz, ok);                                                                      \
+    const T cx = x, cy = y, cz = z;                                                                       \
+    const T reach = PN_PLANAR_SNAP * (x * x + y * y + z * z) / form->planar->h;                           \
+    const T reach2 = reach * reach;                                                                       \
+    /* the ends in reverse order of priority: the first line's a end last, so that it wins */             \
+    M snapped = snap_to##S(cx, cy, cz, b2x, b2y, b2z, l2->b_in, reach2, &x, &y, &z);                      \
+    snapped |= snap_to##S(cx, cy, cz, a2x, a2y, a2z, l2->a_in, reach2, &x, &y, &z);                       \
+    snapped |= snap_to##S(cx, cy, cz, b1x, b1y, b1z, l1->b_in, reach2, &x, &y, &z);                       \
+    snapped |= snap_to##S(cx, cy, cz, a1x, a1y, a1z, l1->a_in, reach2, &x, &y, &z);                       \
+    const M done = ok | (direction & snapped);                                                            \
+    *px = select(*px, x, done);                                                                           \
+    *py = select(*py, y, done);                                                                           \
+    *pz = select(*pz, z, done);                                                                           \
+    return done;                                                                                          \
   }                                                                                                       \
   /* The term of the piece p0 → p1 (from P), whose ends are o0 and o1 from C (read in the small         \
    * lanes only). In the lanes of form->planar_lanes by the planar form, the ends of project0 and         \
-   * project1 taken to the face's plane (planar_point) and the piece's Δψ added to the frame's sum      \
-   * in the lanes of `use`. */                                                                            \
+   * project1 taken to the face's plane (planar_point, with np0 = N·p0 and np1 = N·p1) and the          \
+   * piece's Δψ added to the frame's sum in the lanes of `use`. */                                      \
   inline T form_piece_term##S(const PnPieceForm##S* form, T p0x, T p0y, T p0z, T p1x, T p1y,              \
                               T p1z, T o0x, T o0y, T o0z, T o1x, T o1y, T o1z, T nx, T ny, T nz,          \
-                              M project0, M project1, M use) {                                            \
+                              M project0, M project1, T np0, T np1, M use) {                              \
     T relative = 0.0f;                                                                                    \
     if (pn_any(form->small))                                                                              \
       relative = arc_term##S(&form->centre, o0x, o0y, o0z, o1x, o1y, o1z, nx, ny, nz, form->em);          \
@@ -341,8 +385,8 @@ inline bool contour_edge(int e, PnOccluder o, float3 p, float3 p_lo, const PnSce
     if (!pn_all(form->planar_lanes))                                                                      \
       term = piece_term##S(p0x, p0y, p0z, p1x, p1y, p1z, nx, ny, nz, form->em);                           \
     if (pn_any(form->planar_lanes)) {                                                                     \
-      planar_point##S(form, project0, &p0x, &p0y, &p0z);                                                  \
-      planar_point##S(form, project1, &p1x, &p1y, &p1z);                                                  \
+      planar_point##S(form, project0, np0, &p0x, &p0y, &p0z);                                             \
+      planar_point##S(form, project1, np1, &p1x, &p1y, &p1z);                                             \
       T dpsi;                                                                                             \
       const T planar =                                                                                    \
           planar_term##S(p0x, p0y, p0z, p1x, p1y, p1z, form->planar, nx, ny, nz, form->em, &dpsi);        \
@@ -413,7 +457,7 @@ inline float3 centre_offset(const PnPieceForm1* form, float3 p) {
 /* form_piece_term1 of the piece a → b, whose ends are off the face's plane where project_a and
  * project_b say. */
 inline float form_piece_term(const PnPieceForm1* form, float3 a, float3 b, float3 oa, float3 ob,
-                             float3 n, int project_a, int project_b) {
+                             float3 n, int project_a, int project_b, float np_a, float np_b) {
   return form_piece_term1(form, a.x, a.y, a.z, b.x, b.y, b.z, oa.x, oa.y, oa.z, ob.x, ob.y, ob.z,
-                          n.x, n.y, n.z, project_a, project_b, 1);
+                          n.x, n.y, n.z, project_a, project_b, np_a, np_b, 1);
 }

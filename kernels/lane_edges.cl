@@ -36,6 +36,9 @@ typedef struct {
 typedef struct {
   float8 ax, ay, az, bx, by, bz; /* hole-oriented per lane, relative to P */
   int8 on;                       /* lanes where it is a contour edge of the occluder */
+  /* N·a and N·b for the face's plane (planar_depth8), in its crossing lanes where
+   * planar_heights_kept */
+  float8 na, nb;
 } ContourEdge8;
 
 /* The cone of directions from P to an occluder's bounding sphere: unit axis u and the sine and
@@ -121,26 +124,32 @@ typedef struct {
   int m;
 } SourceRing8;
 
-/* The ends of the boundary edge of plane id in the face's plane: an S' edge as it is (its ends are
- * there), a contour edge's through planar_end8 (the lanes where both ends' rays meet the plane are
- * returned). */
-inline int8 planar_edge8(const PnPieceForm8* form, const SourceRing8* ring, const Contours8* cs,
-                         int id, float8* ax, float8* ay, float8* az, float8* bx, float8* by,
-                         float8* bz) {
+/* The boundary edge of plane id in the face's plane: an S' edge as it is (its ends are there), a
+ * contour edge's ends through planar_end8 (each there in the lanes where its ray meets the
+ * plane). */
+inline void planar_edge8(const PnPieceForm8* form, const SourceRing8* ring, const Contours8* cs,
+                         int id, PnPlanarLine8* line) {
   if (id >= PN_VEC_ID_CONTOUR) {
     const ContourEdge8* e = &cs->edge[id - PN_VEC_ID_CONTOUR];
-    *ax = e->ax, *ay = e->ay, *az = e->az, *bx = e->bx, *by = e->by, *bz = e->bz;
-    return planar_end8(form, ax, ay, az) & planar_end8(form, bx, by, bz);
+    line->ax = e->ax, line->ay = e->ay, line->az = e->az;
+    line->bx = e->bx, line->by = e->by, line->bz = e->bz;
+    const bool kept = planar_heights_kept(form->plane);
+    const float8 na = kept ? e->na : plane_dot8(form, e->ax, e->ay, e->az);
+    const float8 nb = kept ? e->nb : plane_dot8(form, e->bx, e->by, e->bz);
+    line->a_in = planar_end8(form, na, &line->ax, &line->ay, &line->az);
+    line->b_in = planar_end8(form, nb, &line->bx, &line->by, &line->bz);
+    return;
   }
   if (id == ring->m) {
-    *ax = ring->chord->exit_x, *ay = ring->chord->exit_y, *az = ring->chord->exit_z;
-    *bx = ring->chord->entry_x, *by = ring->chord->entry_y, *bz = ring->chord->entry_z;
+    line->ax = ring->chord->exit_x, line->ay = ring->chord->exit_y, line->az = ring->chord->exit_z;
+    line->bx = ring->chord->entry_x, line->by = ring->chord->entry_y;
+    line->bz = ring->chord->entry_z;
   } else {
     const int j = id + 1 == ring->m ? 0 : id + 1;
-    *ax = ring->x[id], *ay = ring->y[id], *az = ring->z[id];
-    *bx = ring->x[j], *by = ring->y[j], *bz = ring->z[j];
+    line->ax = ring->x[id], line->ay = ring->y[id], line->az = ring->z[id];
+    line->bx = ring->x[j], line->by = ring->y[j], line->bz = ring->z[j];
   }
-  return -1;
+  line->a_in = line->b_in = -1;
 }
 
 /* In the lanes of `use`, the piece end p where the edge of plane id `self` meets the edge of plane
@@ -155,13 +164,10 @@ inline int8 planar_crossings8(const PnPieceForm8* form, const SourceRing8* ring,
     const int other = __builtin_reduce_min(select((int8)(INT_MAX), end->id, left));
     const int8 at = left & (end->id == other);
     left &= ~at;
-    float8 a1x, a1y, a1z, b1x, b1y, b1z, a2x, a2y, a2z, b2x, b2y, b2z;
-    const int lo = min(self, other), hi = max(self, other);
-    int8 ok = at & planar_edge8(form, ring, cs, lo, &a1x, &a1y, &a1z, &b1x, &b1y, &b1z);
-    ok &= planar_edge8(form, ring, cs, hi, &a2x, &a2y, &a2z, &b2x, &b2y, &b2z);
-    if (!pn_any(ok)) continue;
-    done |= planar_crossing8(form, a1x, a1y, a1z, b1x, b1y, b1z, a2x, a2y, a2z, b2x, b2y, b2z, ok,
-                             px, py, pz);
+    PnPlanarLine8 first, second;
+    planar_edge8(form, ring, cs, min(self, other), &first);
+    planar_edge8(form, ring, cs, max(self, other), &second);
+    done |= planar_crossing8(form, &first, &second, at, px, py, pz);
   }
   return done;
 }
@@ -169,13 +175,14 @@ inline int8 planar_crossings8(const PnPieceForm8* form, const SourceRing8* ring,
 /* Integral over the visible parts of the edge a → b (per lane, from P) owned by region `owner`
  * (-1 = the source), within the parameter range [lo, hi] of the lanes in `on`. Where the face is
  * small, `offsets` (null for an occluder's edge) holds the ends' offsets from the face's centre,
- * exact in the lanes of offsets->on (contour.cl, PnPieceForm). */
+ * exact in the lanes of offsets->on (contour.cl, PnPieceForm). `edge` is the occluder's contour
+ * edge (null for an edge of S'), whose ends' heights planar_point reads. */
 void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, float8 bz,
                         float8 msx, float8 msy, float8 msz, int self, float8 lo, float8 hi,
                         const PieceEnd8* lo_end, const PieceEnd8* hi_end, int8 on, int owner,
                         float8 nx, float8 ny, float8 nz, const PnPieceForm8* form,
-                        const ContourEdge8* offsets, const Contours8* cs, const SourceRing8* ring,
-                        PnSum8* acc) {
+                        const ContourEdge8* offsets, const ContourEdge8* edge, const Contours8* cs,
+                        const SourceRing8* ring, PnSum8* acc) {
   if (!pn_any(on)) return;
   float8 mex = ay * bz - az * by, mey = az * bx - ax * bz, mez = ax * by - ay * bx;
   float8 la = sqrt(ax * ax + ay * ay + az * az), lb = sqrt(bx * bx + by * by + bz * bz);
@@ -314,8 +321,19 @@ void visible_edge_term8(float8 ax, float8 ay, float8 az, float8 bx, float8 by, f
      * crossings found in it. */
     const int8 off0 = (offsets ? turned0 : (int8)(-1)) & ~crossed0,
                off1 = (offsets ? turned1 : (int8)(-1)) & ~crossed1;
+    /* N·p at each end, for the planar form: from the occluder's vertices' heights along its edge,
+     * but at turned ends. */
+    float8 np0 = 0.0f, np1 = 0.0f;
+    if (pn_any(form->planar_lanes)) {
+      np0 = plane_dot8(form, p0x, p0y, p0z);
+      np1 = plane_dot8(form, p1x, p1y, p1z);
+      if (edge && planar_heights_kept(form->plane)) {
+        np0 = select(edge_point8(edge->na, edge->nb, st), np0, turned0);
+        np1 = select(edge_point8(edge->na, edge->nb, end), np1, turned1);
+      }
+    }
     float8 term = form_piece_term8(form, p0x, p0y, p0z, p1x, p1y, p1z, o0x, o0y, o0z, o1x, o1y, o1z,
-                                   nx, ny, nz, off0, off1, valid);
+                                   nx, ny, nz, off0, off1, np0, np1, valid);
     pn_sum_add8(acc, select((float8)(0.0f), term, valid));
   }
 }

@@ -186,8 +186,10 @@ void gather_occluders8(Contours8* cs, const SourcePolygon8* s, const Points8* pt
         break;
       }
       float8 fx, fy, fz, gx, gy, gz;
-      pn_from8(tables->occluderVertices[o.firstVertex + ed.x], pts, &fx, &fy, &fz);
-      pn_from8(tables->occluderVertices[o.firstVertex + ed.y], pts, &gx, &gy, &gz);
+      const PnPosition qf = tables->occluderVertices[o.firstVertex + ed.x];
+      const PnPosition qg = tables->occluderVertices[o.firstVertex + ed.y];
+      pn_from8(qf, pts, &fx, &fy, &fz);
+      pn_from8(qg, pts, &gx, &gy, &gz);
       EdgePlane8* ep = &cs->plane[c];
       ContourEdge8* e = &cs->edge[c++];
       /* run as the face that does not see P does (contour_edge) */
@@ -197,6 +199,13 @@ void gather_occluders8(Contours8* cs, const SourcePolygon8* s, const Points8* pt
       e->bx = select(gx, fx, lf);
       e->by = select(gy, fy, lf);
       e->bz = select(gz, fz, lf);
+      e->na = e->nb = 0.0f;
+      if (pn_any(s->form.crossing_lanes) && planar_heights_kept(face.plane)) {
+        const float8 nf = planar_depth8(qf, fx, fy, fz, fv->face, &s->planar, tables);
+        const float8 ng = planar_depth8(qg, gx, gy, gz, fv->face, &s->planar, tables);
+        e->na = select(nf, ng, lf);
+        e->nb = select(ng, nf, lf);
+      }
       side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &ep->mx, &ep->my, &ep->mz);
       e->on = on;
       ep->on = on & ((ep->mx != 0.0f) | (ep->my != 0.0f) | (ep->mz != 0.0f));
@@ -364,6 +373,10 @@ void snap_tied_vertices8(Contours8* cs, const SourcePolygon8* s) {
       moved |= at_a | at_b;
     }
     if (!pn_any(moved)) continue;
+    /* the ends' heights move with them (the move is across an S' edge, along the plane but where
+     * snap_end takes it along the side plane's normal) */
+    e->na += plane_dot8(&s->form, e->ax - ax, e->ay - ay, e->az - az);
+    e->nb += plane_dot8(&s->form, e->bx - bx, e->by - by, e->bz - bz);
     EdgePlane8* ep = &cs->plane[k];
     float8 mx, my, mz;
     side_normal8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, &mx, &my, &mz);
@@ -396,7 +409,7 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
                                   s->oy[j], s->oz[j], s->exact};
     visible_edge_term8(s->x[i], s->y[i], s->z[i], s->x[j], s->y[j], s->z[j], s->side[i].mx,
                        s->side[i].my, s->side[i].mz, i, lo, hi, &none, &none, lanes & (a_in | b_in),
-                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, cs, &ring, sum);
+                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, 0, cs, &ring, sum);
   }
   const HorizonChord8* chord = &s->chord;
   const HorizonChord8* oc = &s->chord_offset;
@@ -405,7 +418,7 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
   visible_edge_term8(chord->exit_x, chord->exit_y, chord->exit_z, chord->entry_x, chord->entry_y,
                      chord->entry_z, s->side[m].mx, s->side[m].my, s->side[m].mz, m, (float8)(0.0f),
                      (float8)(1.0f), &none, &none, lanes & s->cut, -1, pts->nx, pts->ny, pts->nz,
-                     &s->form, &offsets, cs, &ring, sum);
+                     &s->form, &offsets, 0, cs, &ring, sum);
 }
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
@@ -443,7 +456,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
                      &lo_end, &hi_end);
       visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
                          PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, pts->nx, pts->ny,
-                         pts->nz, &s->form, 0, cs, &ring, sum);
+                         pts->nz, &s->form, 0, e, cs, &ring, sum);
     }
 }
 

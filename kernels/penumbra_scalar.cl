@@ -25,6 +25,9 @@ typedef struct {
    * point: occluder v owns edges [first_contour[v], first_contour[v + 1]). */
   float3 contour_a[PN_MAX_CONTOUR_EDGES], contour_b[PN_MAX_CONTOUR_EDGES];
   float3 contour_side[PN_MAX_CONTOUR_EDGES];
+  /* N·a and N·b for the face's plane (planar_depth1), where form.crossing_lanes is set and
+   * planar_heights_kept */
+  float contour_na[PN_MAX_CONTOUR_EDGES], contour_nb[PN_MAX_CONTOUR_EDGES];
   int first_contour[PN_MAX_ACTIVE_OCCLUDERS + 1];
   int active_count;
   PnEmission emission;   /* how the face emits (luminance_moments.cl) */
@@ -151,21 +154,29 @@ inline float3 plane_of(const PenumbraState* st, int id) {
   return id < PN_ID_CONTOUR ? st->source_side[id] : st->contour_side[id - PN_ID_CONTOUR];
 }
 
-/* The ends of the boundary edge of plane id in the face's plane: an S' edge as it is (its ends are
- * there), a contour edge's through planar_end1; false where an end's ray does not meet the plane
- * clearly (contour.cl, planar_crossing). */
-inline bool planar_edge(const PenumbraState* st, int id, float3* a, float3* b) {
+/* The boundary edge of plane id in the face's plane: an S' edge as it is (its ends are there), a
+ * contour edge's ends through planar_end1 (each there where its ray meets the plane). */
+inline PnPlanarLine1 planar_edge(const PenumbraState* st, int id) {
+  PnPlanarLine1 line;
+  line.a_in = line.b_in = 1;
+  float3 a, b;
   if (id < PN_ID_CONTOUR) {
-    *a = st->source[id];
-    *b = st->source[id + 1 == st->source_count ? 0 : id + 1];
-    return true;
+    a = st->source[id];
+    b = st->source[id + 1 == st->source_count ? 0 : id + 1];
+  } else {
+    a = st->contour_a[id - PN_ID_CONTOUR];
+    b = st->contour_b[id - PN_ID_CONTOUR];
   }
-  const float3 c = st->contour_a[id - PN_ID_CONTOUR], d = st->contour_b[id - PN_ID_CONTOUR];
-  float ax = c.x, ay = c.y, az = c.z, bx = d.x, by = d.y, bz = d.z;
-  const bool ok = planar_end1(&st->form, &ax, &ay, &az) && planar_end1(&st->form, &bx, &by, &bz);
-  *a = (float3)(ax, ay, az);
-  *b = (float3)(bx, by, bz);
-  return ok;
+  line.ax = a.x, line.ay = a.y, line.az = a.z, line.bx = b.x, line.by = b.y, line.bz = b.z;
+  if (id >= PN_ID_CONTOUR) {
+    const int e = id - PN_ID_CONTOUR;
+    const bool kept = planar_heights_kept(st->form.plane);
+    const float na = kept ? st->contour_na[e] : plane_dot1(&st->form, a.x, a.y, a.z);
+    const float nb = kept ? st->contour_nb[e] : plane_dot1(&st->form, b.x, b.y, b.z);
+    line.a_in = planar_end1(&st->form, na, &line.ax, &line.ay, &line.az);
+    line.b_in = planar_end1(&st->form, nb, &line.bx, &line.by, &line.bz);
+  }
+  return line;
 }
 
 /* The piece end p where the edges of planes self and other cross, as their lines' crossing in the
@@ -173,13 +184,10 @@ inline bool planar_edge(const PenumbraState* st, int id, float3* a, float3* b) {
  * is. */
 inline float3 planar_crossing_point(const PenumbraState* st, int self, int other, float3 p,
                                     int* crossed) {
-  *crossed = 0;
-  float3 a1, b1, a2, b2;
-  if (!planar_edge(st, min(self, other), &a1, &b1) || !planar_edge(st, max(self, other), &a2, &b2))
-    return p;
+  const PnPlanarLine1 first = planar_edge(st, min(self, other));
+  const PnPlanarLine1 second = planar_edge(st, max(self, other));
   float x = p.x, y = p.y, z = p.z;
-  *crossed = planar_crossing1(&st->form, a1.x, a1.y, a1.z, b1.x, b1.y, b1.z, a2.x, a2.y, a2.z, b2.x,
-                              b2.y, b2.z, 1, &x, &y, &z);
+  *crossed = planar_crossing1(&st->form, &first, &second, 1, &x, &y, &z);
   return (float3)(x, y, z);
 }
 
@@ -311,7 +319,15 @@ void visible_edge_term(float3 a, float3 b, float3 oa, float3 ob, bool exact, int
      * in it. */
     const int off0 = (owner >= 0 || turned0) && !crossed0;
     const int off1 = (owner >= 0 || turned1) && !crossed1;
-    pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n, off0, off1));
+    /* N·p at each end: from the occluder's vertices' heights along its edge, but at turned ends. */
+    float np0 = plane_dot1(&st->form, p0.x, p0.y, p0.z);
+    float np1 = plane_dot1(&st->form, p1.x, p1.y, p1.z);
+    if (owner >= 0 && st->form.planar_lanes && planar_heights_kept(st->form.plane)) {
+      const int e = self - PN_ID_CONTOUR;
+      if (!turned0) np0 = edge_point1(st->contour_na[e], st->contour_nb[e], lo[k]);
+      if (!turned1) np1 = edge_point1(st->contour_na[e], st->contour_nb[e], hi[k]);
+    }
+    pn_sum_add(acc, form_piece_term(&st->form, p0, p1, o0, o1, n, off0, off1, np0, np1));
   }
 }
 
@@ -357,6 +373,9 @@ void snap_tied_vertices(PenumbraState* st) {
     if (!moved) continue;
     st->contour_a[e] = (float3)(ax, ay, az);
     st->contour_b[e] = (float3)(bx, by, bz);
+    /* the ends' heights move with them (snap_tied_vertices8) */
+    st->contour_na[e] += plane_dot1(&st->form, ax - a0.x, ay - a0.y, az - a0.z);
+    st->contour_nb[e] += plane_dot1(&st->form, bx - b0.x, by - b0.y, bz - b0.z);
     st->contour_side[e] = side_normal(st->contour_a[e], st->contour_b[e]);
   }
 }
@@ -505,12 +524,13 @@ bool source_polygon(PenumbraState* st, float3 p, float3 p_lo, float3 n, PnSource
 }
 
 /* Adds occluder o, active at P, with its contour edges. */
-void add_contour(PenumbraState* st, PnOccluder o, float3 p, float3 p_lo,
+void add_contour(PenumbraState* st, PnOccluder o, PnSourceFace face, float3 p, float3 p_lo,
                  const PnSceneTables* tables, float eps_length, int* error) {
   int c = st->first_contour[st->active_count];
   for (int e = 0; e < o.edgeCount; ++e) {
     float3 ea, eb;
-    if (!contour_edge(e, o, p, p_lo, tables, eps_length, &ea, &eb)) continue;
+    PnPosition qa, qb;
+    if (!contour_edge(e, o, p, p_lo, tables, eps_length, &ea, &eb, &qa, &qb)) continue;
     if (c == PN_MAX_CONTOUR_EDGES) {
       *error |= PN_ERROR_TOO_MANY_CONTOUR_EDGES;
       break;
@@ -518,6 +538,11 @@ void add_contour(PenumbraState* st, PnOccluder o, float3 p, float3 p_lo,
     st->contour_a[c] = ea;
     st->contour_b[c] = eb;
     st->contour_side[c] = side_normal(ea, eb);
+    st->contour_na[c] = st->contour_nb[c] = 0.0f;
+    if (st->form.crossing_lanes && planar_heights_kept(face.plane)) {
+      st->contour_na[c] = planar_depth1(qa, ea.x, ea.y, ea.z, face, &st->planar, tables);
+      st->contour_nb[c] = planar_depth1(qb, eb.x, eb.y, eb.z, face, &st->planar, tables);
+    }
     ++c;
   }
   ++st->active_count;
@@ -585,7 +610,7 @@ float penumbra_face(float3 p, float3 p_lo, float3 n, int own, PnSourceFace face,
       *error |= PN_ERROR_TOO_MANY_OCCLUDERS;
       break;
     }
-    add_contour(&st, o, p, p_lo, tables, eps_length, error);
+    add_contour(&st, o, face, p, p_lo, tables, eps_length, error);
   }
 
   const float sum = wedges == 0 ? region_sum(&st, n, error)

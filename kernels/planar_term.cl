@@ -57,51 +57,73 @@ inline bool planar_emission(PnSourceFace face, const PnEmission* em) {
 #define PN_PLANAR_SINE_UNIFORM 0.35f
 #define PN_PLANAR_SINE 0.5f
 
+/* Whether the planar form keeps an occluder's ends' heights from the double-float positions
+ * (planar_depth): for a face off the scene's axes. */
+inline bool planar_heights_kept(float4 plane) {
+  return (plane.x == 0.0f) + (plane.y == 0.0f) + (plane.z == 0.0f) < 2;
+}
+
 /* What the planar form needs of a face per lane: P's height h above the face's plane, n·N, the
  * plane's normal N, and the running sum of the edges' Δψ. */
-#define PN_DEFINE_PLANAR_FRAME(T, M, S, Sum, add)                                                     \
-  inline M planar_lanes##S(PnSourceFace face, const PnEmission* em, T x, T y, T z,                    \
-                           bool crossings) {                                                          \
-    if (!planar_emission(face, em)) return (M)(0);                                                    \
-    const T h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);                            \
-    const float sine = em->order <= 0 && !crossings ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;        \
-    return h * h < sine * sine * (x * x + y * y + z * z);                                             \
-  }                                                                                                   \
-  typedef struct {                                                                                    \
-    T h, nn, dpsi_sum;                                                                                \
-    float3 n;                                                                                         \
-  } PnPlanarFrame##S;                                                                                 \
-  /* h = N·(P − V0), V0 the face's first vertex and P at (px, py, pz) + (lx, ly, lz): V0 − P per \
-   * coordinate as an unevaluated sum (TwoSum of the hi parts, plus the lo parts), each product's     \
-   * rounding kept by fma, so that h is good to a rounding of itself however far P is from the        \
-   * face. */                                                                                         \
-  inline T planar_height##S(T px, T py, T pz, T lx, T ly, T lz, PnSourceFace face,                    \
-                            const PnSceneTables* tables) {                                            \
-    const PnPosition v = tables->sourceVertices[face.firstVertex];                                    \
-    const float3 n = face.plane.xyz;                                                                  \
-    const T sx = v.hi.x - px, sy = v.hi.y - py, sz = v.hi.z - pz;                                     \
-    const T bx = sx - v.hi.x, by = sy - v.hi.y, bz = sz - v.hi.z;                                     \
-    const T ex = (v.hi.x - (sx - bx)) + (-px - bx) + (v.lo.x - lx);                                   \
-    const T ey = (v.hi.y - (sy - by)) + (-py - by) + (v.lo.y - ly);                                   \
-    const T ez = (v.hi.z - (sz - bz)) + (-pz - bz) + (v.lo.z - lz);                                   \
-    const T qx = n.x * sx, qy = n.y * sy, qz = n.z * sz;                                              \
-    Sum sum = {0.0f, 0.0f};                                                                           \
-    add(&sum, qx);                                                                                    \
-    add(&sum, qy);                                                                                    \
-    add(&sum, qz);                                                                                    \
-    const T rest = (fma((T)(n.x), sx, -qx) + n.x * ex) + (fma((T)(n.y), sy, -qy) + n.y * ey) +        \
-                   (fma((T)(n.z), sz, -qz) + n.z * ez);                                               \
-    return -(sum.s + (sum.c + rest));                                                                 \
-  }                                                                                                   \
-  /* The planar frame of a face for P (as planar_height) with unit normal (nx, ny, nz). */            \
-  inline PnPlanarFrame##S planar_frame_at##S(T px, T py, T pz, T lx, T ly, T lz, T nx, T ny, T nz,    \
-                                             PnSourceFace face, const PnSceneTables* tables) {        \
-    PnPlanarFrame##S frame;                                                                           \
-    frame.n = face.plane.xyz;                                                                         \
-    frame.h = planar_height##S(px, py, pz, lx, ly, lz, face, tables);                                 \
-    frame.nn = nx * frame.n.x + ny * frame.n.y + nz * frame.n.z;                                      \
-    frame.dpsi_sum = 0.0f;                                                                            \
-    return frame;                                                                                     \
+#define PN_DEFINE_PLANAR_FRAME(T, M, S, Sum, add)                                                          \
+  inline M planar_lanes##S(PnSourceFace face, const PnEmission* em, T x, T y, T z,                         \
+                           bool crossings) {                                                               \
+    if (!planar_emission(face, em)) return (M)(0);                                                         \
+    const T h = -(face.plane.x * x + face.plane.y * y + face.plane.z * z);                                 \
+    const float sine = em->order <= 0 && !crossings ? PN_PLANAR_SINE_UNIFORM : PN_PLANAR_SINE;             \
+    return h * h < sine * sine * (x * x + y * y + z * z);                                                  \
+  }                                                                                                        \
+  typedef struct {                                                                                         \
+    T h, nn, dpsi_sum;                                                                                     \
+    float3 n;                                                                                              \
+  } PnPlanarFrame##S;                                                                                      \
+  /* h = N·(P − V0), V0 the face's first vertex and P at (px, py, pz) + (lx, ly, lz): V0 − P per      \
+   * coordinate as an unevaluated sum (TwoSum of the hi parts, plus the lo parts), each product's          \
+   * rounding kept by fma, so that h is good to a rounding of itself however far P is from the             \
+   * face. */                                                                                              \
+  inline T planar_height##S(T px, T py, T pz, T lx, T ly, T lz, PnSourceFace face,                         \
+                            const PnSceneTables* tables) {                                                 \
+    const PnPosition v = tables->sourceVertices[face.firstVertex];                                         \
+    const float3 n = face.plane.xyz;                                                                       \
+    const T sx = v.hi.x - px, sy = v.hi.y - py, sz = v.hi.z - pz;                                          \
+    const T bx = sx - v.hi.x, by = sy - v.hi.y, bz = sz - v.hi.z;                                          \
+    const T ex = (v.hi.x - (sx - bx)) + (-px - bx) + (v.lo.x - lx);                                        \
+    const T ey = (v.hi.y - (sy - by)) + (-py - by) + (v.lo.y - ly);                                        \
+    const T ez = (v.hi.z - (sz - bz)) + (-pz - bz) + (v.lo.z - lz);                                        \
+    const T qx = n.x * sx, qy = n.y * sy, qz = n.z * sz;                                                   \
+    Sum sum = {0.0f, 0.0f};                                                                                \
+    add(&sum, qx);                                                                                         \
+    add(&sum, qy);                                                                                         \
+    add(&sum, qz);                                                                                         \
+    const T rest = (fma((T)(n.x), sx, -qx) + n.x * ex) + (fma((T)(n.y), sy, -qy) + n.y * ey) +             \
+                   (fma((T)(n.z), sz, -qz) + n.z * ez);                                                    \
+    return -(sum.s + (sum.c + rest));                                                                      \
+  }                                                                                                        \
+  /* The planar frame of a face for P (as planar_height) with unit normal (nx, ny, nz). */                 \
+  inline PnPlanarFrame##S planar_frame_at##S(T px, T py, T pz, T lx, T ly, T lz, T nx, T ny, T nz,         \
+                                             PnSourceFace face, const PnSceneTables* tables) {             \
+    PnPlanarFrame##S frame;                                                                                \
+    frame.n = face.plane.xyz;                                                                              \
+    frame.h = planar_height##S(px, py, pz, lx, ly, lz, face, tables);                                      \
+    frame.nn = nx * frame.n.x + ny * frame.n.y + nz * frame.n.z;                                           \
+    frame.dpsi_sum = 0.0f;                                                                                 \
+    return frame;                                                                                          \
+  }                                                                                                        \
+  /* N·(Q − P) for a vertex Q of the scene's tables at x, y, z = Q − P (pn_from): N·(Q − V0) − h \
+   * from the double-float positions where that rounds less than N·(x, y, z), whose rounding is up        \
+   * to u (|N_x x| + |N_y y| + |N_z z|) against u (|N·(Q − V0)| + h). The image of Q on the plane,      \
+   * (Q − P) h / −N·(Q − P), moves by its distance from P over sin e times the relative rounding    \
+   * of N·(Q − P): for a tilted face and an occluder near its plane (a bezel) that is r/sin e from      \
+   * P's distance, and only the bezel's own height from the heights. A face along the scene's axes         \
+   * (planar_heights_kept false) needs none: N·(x, y, z) is one coordinate, rounded to u of               \
+   * itself, and |N·(Q − P)| <= |N·(Q − V0)| + h. */                                                 \
+  inline T planar_depth##S(PnPosition q, T x, T y, T z, PnSourceFace face,                                 \
+                           const PnPlanarFrame##S* frame, const PnSceneTables* tables) {                   \
+    const float3 n = face.plane.xyz;                                                                       \
+    const T np = n.x * x + n.y * y + n.z * z;                                                              \
+    const float hq = planar_height1(q.hi.x, q.hi.y, q.hi.z, q.lo.x, q.lo.y, q.lo.z, face, tables);         \
+    const T spread = fabs(n.x * x) + fabs(n.y * y) + fabs(n.z * z);                                        \
+    return select(np, hq - frame->h, fabs(hq) + fabs(frame->h) < spread);                                  \
   }
 
 /* The term of the edge a → b (vectors from P, both in the face's plane): 2 Σ_k c_k M_k(edge)
