@@ -392,12 +392,20 @@ inline SourceRing8 source_ring8(const SourcePolygon8* s) {
   return ring;
 }
 
+/* What the face's boundary edges are integrated against (visible_edge_term8). */
+inline ContourContext8 contour_context8(const SourcePolygon8* s, const Points8* pts,
+                                        const Contours8* cs, const SourceRing8* ring) {
+  const ContourContext8 ctx = {&s->form, cs, ring, pts->nx, pts->ny, pts->nz};
+  return ctx;
+}
+
 /* Boundary part (a): the source's edges above the horizon, and the chord. Their ends are vertices
  * or on the horizon, where the edge and the chord compute the same point. */
 void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, const Contours8* cs,
                        PnSum8* sum) {
   const int m = s->m;
   const SourceRing8 ring = source_ring8(s);
+  const ContourContext8 ctx = contour_context8(s, pts, cs, &ring);
   PieceEnd8 none;
   piece_end_clear8(&none);
   for (int i = 0; i < m; ++i) {
@@ -407,18 +415,28 @@ void integrate_source8(const SourcePolygon8* s, const Points8* pts, int8 lanes, 
     float8 lo = select((float8)(0.0f), t, ~a_in), hi = select((float8)(1.0f), t, ~b_in);
     const ContourEdge8 offsets = {s->ox[i], s->oy[i], s->oz[i], s->ox[j],
                                   s->oy[j], s->oz[j], s->exact};
-    visible_edge_term8(s->x[i], s->y[i], s->z[i], s->x[j], s->y[j], s->z[j], s->side[i].mx,
-                       s->side[i].my, s->side[i].mz, i, lo, hi, &none, &none, lanes & (a_in | b_in),
-                       -1, pts->nx, pts->ny, pts->nz, &s->form, &offsets, 0, cs, &ring, sum);
+    const BoundaryEdge8 edge = {s->x[i],     s->y[i], s->z[i], s->x[j],  s->y[j], s->z[j],
+                                &s->side[i], i,       -1,      &offsets, 0};
+    const EdgeSpan8 span = {lo, hi, &none, &none, lanes & (a_in | b_in)};
+    visible_edge_term8(&edge, &span, &ctx, sum);
   }
   const HorizonChord8* chord = &s->chord;
   const HorizonChord8* oc = &s->chord_offset;
   const ContourEdge8 offsets = {oc->exit_x,  oc->exit_y,  oc->exit_z, oc->entry_x,
                                 oc->entry_y, oc->entry_z, s->exact};
-  visible_edge_term8(chord->exit_x, chord->exit_y, chord->exit_z, chord->entry_x, chord->entry_y,
-                     chord->entry_z, s->side[m].mx, s->side[m].my, s->side[m].mz, m, (float8)(0.0f),
-                     (float8)(1.0f), &none, &none, lanes & s->cut, -1, pts->nx, pts->ny, pts->nz,
-                     &s->form, &offsets, 0, cs, &ring, sum);
+  const BoundaryEdge8 edge = {chord->exit_x,
+                              chord->exit_y,
+                              chord->exit_z,
+                              chord->entry_x,
+                              chord->entry_y,
+                              chord->entry_z,
+                              &s->side[m],
+                              m,
+                              -1,
+                              &offsets,
+                              0};
+  const EdgeSpan8 span = {0.0f, 1.0f, &none, &none, lanes & s->cut};
+  visible_edge_term8(&edge, &span, &ctx, sum);
 }
 
 /* Boundary part (b): the occluders' contour edges inside S', as holes. */
@@ -426,6 +444,7 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
                       PnSum8* sum, int8* tied_lanes) {
   const int m = s->m;
   const SourceRing8 ring = source_ring8(s);
+  const ContourContext8 ctx = contour_context8(s, pts, cs, &ring);
   for (int u = 0; u < cs->count; ++u)
     for (int k = cs->first_edge[u]; k < cs->first_edge[u + 1]; ++k) {
       const ContourEdge8* e = &cs->edge[k];
@@ -454,9 +473,10 @@ void integrate_holes8(const SourcePolygon8* s, const Points8* pts, int8 lanes, c
       PieceEnd8 lo_end, hi_end;
       crossing_ends8(ep->mx, ep->my, ep->mz, PN_VEC_ID_CONTOUR + k, s->side, 0, id0, id1, on,
                      &lo_end, &hi_end);
-      visible_edge_term8(e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep->mx, ep->my, ep->mz,
-                         PN_VEC_ID_CONTOUR + k, t0, t1, &lo_end, &hi_end, on, u, pts->nx, pts->ny,
-                         pts->nz, &s->form, 0, e, cs, &ring, sum);
+      const BoundaryEdge8 edge = {
+          e->ax, e->ay, e->az, e->bx, e->by, e->bz, ep, PN_VEC_ID_CONTOUR + k, u, 0, e};
+      const EdgeSpan8 span = {t0, t1, &lo_end, &hi_end, on};
+      visible_edge_term8(&edge, &span, &ctx, sum);
     }
 }
 
