@@ -61,14 +61,16 @@ std::string judge(const std::filesystem::path& exr, const std::filesystem::path&
   ScalarImage spaceZero(hdr.width, hdr.height);
   spaceZero.values = displaySpaces(hdr, 0.02).value0;
   const HaloMeasure halo = measureHalos(spaceZero, faces, displayedValue(image, decode));
-  char row[300];
+  char row[400];
   std::snprintf(row, sizeof row,
                 "S %.4f  N %.4f  Q %.4f  halo +%.4f -%.4f mean %.4f (%d regions)  S_l %.3f %.3f "
-                "%.3f %.3f %.3f",
+                "%.3f %.3f %.3f  luma %.1f (%.3f)  block sigma %.1f (%.3f)",
                 score.structuralFidelity, score.naturalness, score.quality, halo.overshoot,
                 halo.undershoot, halo.meanDeviation, halo.regions, score.scaleFidelity[0],
                 score.scaleFidelity[1], score.scaleFidelity[2], score.scaleFidelity[3],
-                score.scaleFidelity[4]);
+                score.scaleFidelity[4], score.naturalnessFactors.meanLuma,
+                score.naturalnessFactors.brightness, score.naturalnessFactors.blockDeviation,
+                score.naturalnessFactors.contrast);
   return row;
 }
 

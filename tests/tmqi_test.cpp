@@ -155,6 +155,11 @@ TEST(Tmqi, NaturalnessIsTheProductOfTheTwoFittedDensities) {
   const double contrast =
       betaDensity(deviation / 64.29, alpha, beta) / betaDensity(mode, alpha, beta);
   EXPECT_NEAR(statisticalNaturalness(image), brightness * contrast, 1e-9);
+  const NaturalnessFactors factors = naturalnessFactors(image);
+  EXPECT_NEAR(factors.meanLuma, mean, 1e-9);
+  EXPECT_NEAR(factors.blockDeviation, deviation, 1e-9);
+  EXPECT_NEAR(factors.brightness, brightness, 1e-9);
+  EXPECT_NEAR(factors.contrast, contrast, 1e-9);
 }
 
 TEST(Tmqi, QualityCombinesFidelityAndNaturalness) {

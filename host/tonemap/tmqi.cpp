@@ -154,7 +154,7 @@ TmqiScore structuralFidelity(const ScalarImage& hdrLuminance, const ScalarImage&
   return score;
 }
 
-double statisticalNaturalness(const ScalarImage& displayLuminance) {
+NaturalnessFactors naturalnessFactors(const ScalarImage& displayLuminance) {
   const int width = displayLuminance.width, height = displayLuminance.height;
   if (width < 1 || height < 1) throw std::invalid_argument("TMQI: empty display image");
   double total = 0, deviationSum = 0;
@@ -177,21 +177,30 @@ double statisticalNaturalness(const ScalarImage& displayLuminance) {
     }
   }
   const double pixels = double(width) * height;
-  const double mean = total / pixels, contrast = deviationSum / pixels / kContrastScale;
-  const double brightness =
+  NaturalnessFactors factors;
+  factors.meanLuma = total / pixels;
+  factors.blockDeviation = deviationSum / pixels;
+  const double mean = factors.meanLuma, contrast = factors.blockDeviation / kContrastScale;
+  factors.brightness =
       std::exp(-(mean - kMeanCentre) * (mean - kMeanCentre) / (2 * kMeanSpread * kMeanSpread));
   // Beta(α, β) density over its value at the mode m = (α - 1) / (α + β - 2).
   const double mode = (kContrastAlpha - 1) / (kContrastAlpha + kContrastBeta - 2);
-  const double contrastLikelihood =
-      contrast > 0 && contrast < 1 ? std::pow(contrast / mode, kContrastAlpha - 1) *
-                                         std::pow((1 - contrast) / (1 - mode), kContrastBeta - 1)
-                                   : 0.0;
-  return brightness * contrastLikelihood;
+  factors.contrast = contrast > 0 && contrast < 1
+                         ? std::pow(contrast / mode, kContrastAlpha - 1) *
+                               std::pow((1 - contrast) / (1 - mode), kContrastBeta - 1)
+                         : 0.0;
+  return factors;
+}
+
+double statisticalNaturalness(const ScalarImage& displayLuminance) {
+  const NaturalnessFactors factors = naturalnessFactors(displayLuminance);
+  return factors.brightness * factors.contrast;
 }
 
 TmqiScore toneMappedQuality(const ScalarImage& hdrLuminance, const ScalarImage& displayLuminance) {
   TmqiScore score = structuralFidelity(hdrLuminance, displayLuminance);
-  score.naturalness = statisticalNaturalness(displayLuminance);
+  score.naturalnessFactors = naturalnessFactors(displayLuminance);
+  score.naturalness = score.naturalnessFactors.brightness * score.naturalnessFactors.contrast;
   score.quality = kFidelityShare * std::pow(score.structuralFidelity, kFidelityExponent) +
                   (1 - kFidelityShare) * std::pow(score.naturalness, kNaturalnessExponent);
   return score;

@@ -12,10 +12,20 @@ namespace penumbra {
 
 inline constexpr int kTmqiScales = 5;
 
+// What N is made of: the display image's two statistics and their likelihoods under the
+// distributions fitted to natural images, each divided by its peak (N = brightness · contrast).
+struct NaturalnessFactors {
+  double meanLuma = 0;        // the image's mean luma, 0-255
+  double blockDeviation = 0;  // its mean 11×11-block sample standard deviation, luma levels
+  double brightness = 0;      // Gaussian likelihood of meanLuma (peak at 115.94)
+  double contrast = 0;        // Beta likelihood of blockDeviation / 64.29 (peak at 17.5 levels)
+};
+
 struct TmqiScore {
   double structuralFidelity = 0;  // S in [0, 1]: Π S_l^w_l over the scales
   double naturalness = 0;         // N in [0, 1]: brightness and contrast likelihoods, each ≤ 1
-  double quality = 0;             // Q = a S^α + (1 - a) N^β
+  NaturalnessFactors naturalnessFactors;
+  double quality = 0;                               // Q = a S^α + (1 - a) N^β
   std::array<double, kTmqiScales> scaleFidelity{};  // S_l, finest scale first
 };
 
@@ -32,6 +42,8 @@ TmqiScore structuralFidelity(const ScalarImage& hdrLuminance, const ScalarImage&
 // N alone: the display image's mean and its mean 11×11-block standard deviation against the
 // distributions fitted to natural images.
 double statisticalNaturalness(const ScalarImage& displayLuminance);
+// The same, factor by factor.
+NaturalnessFactors naturalnessFactors(const ScalarImage& displayLuminance);
 
 // Luminance Y (Rec. 709 / sRGB primaries: 0.2126 R + 0.7152 G + 0.0722 B) of linear RGB.
 ScalarImage luminanceOf(const RgbImage& rgb);
