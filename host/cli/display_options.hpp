@@ -79,7 +79,17 @@ inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   command
-      .add_option("--lattice", options.lattice, "Largest spacing of a region's vertices, in pixels")
+      .add_option_function<std::string>(
+          "--vertices",
+          [&options](const std::string& name) { options.vertices = vertexLatticeFromName(name); },
+          "Where the constraint map's unknowns lie: levels (default: each region shown as one "
+          "curve of its own luminance, knots every 5 % of it; no halos) or image (the thesis's "
+          "mesh of pixels, a gain that may change across a region)")
+      ->check(CLI::IsMember({"levels", "image"}, CLI::ignore_case))
+      ->type_name("levels|image");
+  command
+      .add_option("--lattice", options.lattice,
+                  "--vertices image: largest spacing of a region's vertices, in pixels")
       ->capture_default_str()
       ->check(CLI::Range(1, 256));
 }

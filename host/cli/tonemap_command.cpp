@@ -17,12 +17,13 @@ void printStats(const ToneMapStats& s) {
              s.black, s.regions);
   if (s.method == "constraint") {
     fmt::print(stderr,
-               "  {} variables, rows: {} strong ({} with three variables), {} medium, {} weak\n"
+               "  {} variables ({} lattice), rows: {} strong ({} with three variables), {} medium, "
+               "{} weak\n"
                "  {} outer iterations{}, {} at black, {} at white (raised by {:.3f} in log V)\n"
                "  residual rms/max (log V): strong {:.3g}/{:.3g}, medium {:.3g}/{:.3g}, weak "
                "{:.3g}/{:.3g}\n"
                "  seconds: build {:.3f}, solve {:.3f}, pixels {:.3f}\n",
-               s.variables, s.strongRows, s.threeVariableRows, s.mediumRows, s.weakRows,
+               s.variables, s.vertices, s.strongRows, s.threeVariableRows, s.mediumRows, s.weakRows,
                s.outerIterations, s.converged ? "" : " (not converged)", s.atLowerBound,
                s.atUpperBound, s.raisedToWhite, s.strongRms, s.strongMax, s.mediumRms, s.mediumMax,
                s.weakRms, s.weakMax, s.buildSeconds, s.solveSeconds, s.pixelSeconds);

@@ -24,6 +24,7 @@ nlohmann::json toneMapStatsJson(const ToneMapStats& s) {
       {"reflectivity", DisplayModel::kReflectivity},
       {"lower_bound", s.lowerBound},
       {"weights", {{"strong", s.strong}, {"medium", s.medium}, {"weak", s.weak}}},
+      {"vertices", s.vertices},
       {"lattice_px", s.lattice},
       {"width", s.width},
       {"height", s.height},
@@ -66,6 +67,7 @@ ImageMetadata toneMapPngMetadata(const ToneMapStats& s) {
        fmt::format("{} lx, reflectivity {}", s.ambient, DisplayModel::kReflectivity)},
       {"penumbra:lower_bound", fmt::format("{}", s.lowerBound)},
       {"penumbra:weights", fmt::format("strong={} medium={} weak={}", s.strong, s.medium, s.weak)},
+      {"penumbra:vertices", s.vertices},
       {"penumbra:lattice", fmt::format("{}", s.lattice)},
       {"penumbra:white", fmt::format("{} cd/m2", s.white)},
   };

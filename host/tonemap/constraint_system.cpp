@@ -8,24 +8,6 @@
 namespace penumbra {
 namespace {
 
-using Triplet = Eigen::Triplet<double>;
-
-struct RowBuilder {
-  std::vector<Triplet> entries;
-  std::vector<double> target;
-  std::vector<ConstraintLevel> level;
-  std::vector<double> weight;
-
-  void add(ConstraintLevel rowLevel, double rowWeight,
-           std::initializer_list<std::pair<int, double>> terms, double rhs) {
-    const int row = static_cast<int>(target.size());
-    for (const auto& [column, value] : terms) entries.emplace_back(row, column, rowWeight * value);
-    target.push_back(rowWeight * rhs);
-    level.push_back(rowLevel);
-    weight.push_back(rowWeight);
-  }
-};
-
 // log Space-0 V at a pixel.
 double logAt(const LogScene& scene, const RegionMap& regions, int x, int y) {
   return scene.logValue[regions.index(x, y)];
@@ -43,7 +25,7 @@ bool facesRegion(const RegionMap& regions, const MeshVertex& v, int32_t own) {
 // Thesis Fig. 4.5: vertex j (pixel p, region A) and its partner, the pixel q across the edge in
 // region B. If q is a vertex: eq. 4.21. Otherwise q lies between two vertices k, l of B's side of
 // the same edge, at β = |kq| / |kl|: eq. 4.22 when p is the brighter side, eq. 4.24 when q is.
-void addEdgeRow(RowBuilder& rows, int& threeVariableRows, const VertexMesh& mesh,
+void addEdgeRow(ConstraintRows& rows, int& threeVariableRows, const VertexMesh& mesh,
                 const RegionMap& regions, const LogScene& scene, double weight, int j, int qx,
                 int qy) {
   const MeshVertex& p = mesh.vertices[j];
@@ -154,7 +136,7 @@ void addRegionNeighbours(std::vector<std::pair<int, int>>& pairs, const VertexMe
 ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& regions,
                                        const LogScene& scene, const ConstraintWeights& weights) {
   const int n = static_cast<int>(mesh.vertices.size());
-  RowBuilder rows;
+  ConstraintRows rows;
   ConstraintSystem system;
 
   // Strong: from every boundary vertex to each 4-neighbour pixel in another region.
@@ -195,15 +177,28 @@ ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& 
     rows.add(ConstraintLevel::Weak, weights.weak, {{i, 1.0}}, system.start[i]);
   }
 
-  const int m = static_cast<int>(rows.target.size());
-  system.matrix.resize(m, n);
-  system.matrix.setFromTriplets(rows.entries.begin(), rows.entries.end());
-  system.target = Eigen::Map<const Eigen::VectorXd>(rows.target.data(), m);
-  system.lower = Eigen::VectorXd::Constant(n, scene.logLowerBound);
-  system.upper = Eigen::VectorXd::Constant(n, 0.0);
-  system.level = std::move(rows.level);
-  system.weight = std::move(rows.weight);
+  rows.fill(system, n, scene.logLowerBound);
   return system;
+}
+
+void ConstraintRows::add(ConstraintLevel rowLevel, double rowWeight,
+                         std::initializer_list<std::pair<int, double>> terms, double rhs) {
+  const int row = static_cast<int>(target.size());
+  for (const auto& [column, value] : terms) entries.emplace_back(row, column, rowWeight * value);
+  target.push_back(rowWeight * rhs);
+  level.push_back(rowLevel);
+  weight.push_back(rowWeight);
+}
+
+void ConstraintRows::fill(ConstraintSystem& system, int variables, double logLowerBound) {
+  const int m = static_cast<int>(target.size());
+  system.matrix.resize(m, variables);
+  system.matrix.setFromTriplets(entries.begin(), entries.end());
+  system.target = Eigen::Map<const Eigen::VectorXd>(target.data(), m);
+  system.lower = Eigen::VectorXd::Constant(variables, logLowerBound);
+  system.upper = Eigen::VectorXd::Constant(variables, 0.0);
+  system.level = std::move(level);
+  system.weight = std::move(weight);
 }
 
 }  // namespace penumbra

@@ -11,6 +11,8 @@
 //   weak    every vertex at the log of its Space-3 value, the exposure curve (eq. 4.35)
 #include <Eigen/Sparse>
 #include <cstdint>
+#include <initializer_list>
+#include <utility>
 #include <vector>
 
 #include "tonemap/log_scene.hpp"
@@ -35,6 +37,21 @@ struct ConstraintSystem {
   int threeVariableRows = 0;
 };
 
+// Rows as they are made: each one constraint times its level's weight.
+struct ConstraintRows {
+  std::vector<Eigen::Triplet<double>> entries;
+  std::vector<double> target;
+  std::vector<ConstraintLevel> level;
+  std::vector<double> weight;
+
+  void add(ConstraintLevel rowLevel, double rowWeight,
+           std::initializer_list<std::pair<int, double>> terms, double rhs);
+  // Moves the rows into `system` (A, b, levels, weights) with bounds [logLowerBound, 0] on each
+  // of `variables` unknowns.
+  void fill(ConstraintSystem& system, int variables, double logLowerBound);
+};
+
+// The image lattice's rows (vertex_mesh.hpp).
 ConstraintSystem buildConstraintSystem(const VertexMesh& mesh, const RegionMap& regions,
                                        const LogScene& scene, const ConstraintWeights& weights);
 

@@ -17,19 +17,27 @@ bool strongPair(double a, double b, double ratio) {
   return high > 0 && high >= ratio * low;
 }
 
+// Far pixels are binned by log scene value; a near pixel's prediction is the least-squares line
+// log display = a + b log scene through the far pixels within kLocalSpan of its own log scene
+// value: the region's own relation at that luminance, whatever its shape over the whole region.
+constexpr double kBinWidth = 0.01;
+constexpr int kLocalBins = 10;  // kLocalSpan = 0.1 in log scene value (±10 %)
+// Below this variance of the local far pixels' log scene values (a flat region) they fix no
+// slope: b = 1, a pure gain.
+constexpr double kFlatLogVariance = 1e-6;
+
+struct LineSums {
+  double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+  void add(const LineSums& o) { n += o.n, sx += o.sx, sy += o.sy, sxx += o.sxx, sxy += o.sxy; }
+};
+
 struct RegionSums {
   std::vector<double> nearRatio;  // per distance 0 … band-1: Σ display / predicted
   std::vector<int> nearCount;
-  // Far pixels: sums for the least-squares line log display = a + b log scene.
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  double lowest = HUGE_VAL, highest = -HUGE_VAL;  // log scene range of the far pixels
   int farCount = 0;
-  double a = 0, b = 1;
+  double lowest = HUGE_VAL, highest = -HUGE_VAL;  // log scene range of the far pixels
+  std::vector<LineSums> bins;                     // far pixels from `lowest` every kBinWidth
 };
-
-// Below this spread of log scene values (a flat region) the far pixels fix no slope: b = 1, a
-// pure gain.
-constexpr double kFlatLogSpread = 0.05;
 // A display value within 5 % of the image's darkest counts as held at black.
 constexpr double kFloorMargin = 0.05;
 
@@ -94,8 +102,10 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
   }
   const RegionMap regions = findRegions(faces);
   const std::vector<int> distance = distanceFromStrongEdges(regions, sceneValue, options.edgeRatio);
-  std::vector<RegionSums> sums(regions.count, RegionSums{std::vector<double>(options.band, 0.0),
-                                                         std::vector<int>(options.band, 0)});
+  RegionSums empty;
+  empty.nearRatio.assign(options.band, 0.0);
+  empty.nearCount.assign(options.band, 0);
+  std::vector<RegionSums> sums(regions.count, empty);
   // Pixels the display holds at its black carry no halo (an umbra at the floor) and would bend
   // the far pixels' line: only those above the image's darkest display value (by 5 %) count. A
   // display's white needs no such care: far pixels at white give a flat line, and a halo may
@@ -108,28 +118,41 @@ HaloMeasure measureHalos(const ScalarImage& sceneValue, const FaceIdImage& faces
   const auto counted = [&](size_t i) {
     return distance[i] != kUnreached && sceneValue.values[i] > 0 && displayValue.values[i] > floor;
   };
+  const auto isFar = [&](size_t i) { return counted(i) && distance[i] >= options.farDistance; };
   for (size_t i = 0; i < distance.size(); ++i) {
-    if (!counted(i) || distance[i] < options.farDistance) continue;
+    if (!isFar(i)) continue;
     RegionSums& s = sums[regions.region[i]];
-    const double x = std::log(sceneValue.values[i]), y = std::log(displayValue.values[i]);
-    s.sx += x, s.sy += y, s.sxx += x * x, s.sxy += x * y, ++s.farCount;
-    s.lowest = std::min(s.lowest, x), s.highest = std::max(s.highest, x);
+    const double x = std::log(sceneValue.values[i]);
+    s.lowest = std::min(s.lowest, x), s.highest = std::max(s.highest, x), ++s.farCount;
   }
   for (RegionSums& s : sums) {
-    if (s.farCount == 0) continue;
-    const double n = s.farCount, meanX = s.sx / n, meanY = s.sy / n;
-    const double varX = std::max(0.0, s.sxx / n - meanX * meanX);
-    if (varX > kFlatLogSpread * kFlatLogSpread) s.b = (s.sxy / n - meanX * meanY) / varX;
-    s.a = meanY - s.b * meanX;
+    if (s.farCount > 0) s.bins.resize(static_cast<size_t>((s.highest - s.lowest) / kBinWidth) + 1);
+  }
+  for (size_t i = 0; i < distance.size(); ++i) {
+    if (!isFar(i)) continue;
+    RegionSums& s = sums[regions.region[i]];
+    const double x = std::log(sceneValue.values[i]), y = std::log(displayValue.values[i]);
+    LineSums& bin = s.bins[std::min(s.bins.size() - 1, size_t((x - s.lowest) / kBinWidth))];
+    bin.n += 1, bin.sx += x, bin.sy += y, bin.sxx += x * x, bin.sxy += x * y;
   }
   for (size_t i = 0; i < distance.size(); ++i) {
     if (!counted(i) || distance[i] >= options.band) continue;
     RegionSums& s = sums[regions.region[i]];
-    // Only scene values the far pixels also have: the line is not extrapolated (into an umbra,
-    // where a display's black floor is no halo).
+    if (s.bins.empty()) continue;
+    // Only scene values the far pixels also have, within kLocalSpan: the relation is not
+    // extrapolated (into an umbra, where a display's black floor is no halo).
     const double x = std::log(sceneValue.values[i]);
-    if (x < s.lowest - kFlatLogSpread || x > s.highest + kFlatLogSpread) continue;
-    const double predicted = std::exp(s.a + s.b * x);
+    const long at = static_cast<long>(std::floor((x - s.lowest) / kBinWidth));
+    LineSums local;
+    for (long k = std::max(0L, at - kLocalBins);
+         k <= std::min(static_cast<long>(s.bins.size()) - 1, at + kLocalBins); ++k) {
+      local.add(s.bins[k]);
+    }
+    if (local.n < options.minimumPixels) continue;
+    const double meanX = local.sx / local.n, meanY = local.sy / local.n;
+    const double varX = std::max(0.0, local.sxx / local.n - meanX * meanX);
+    const double b = varX > kFlatLogVariance ? (local.sxy / local.n - meanX * meanY) / varX : 1.0;
+    const double predicted = std::exp(meanY + b * (x - meanX));
     s.nearRatio[distance[i]] += displayValue.values[i] / predicted, ++s.nearCount[distance[i]];
   }
   HaloMeasure measure;

@@ -1,14 +1,16 @@
 #pragma once
 // Halos: a display map that lifts (or sinks) a region near a strong edge and lets it drift back to
 // its own level away from the edge. Measured per region against what the region's own pixels far
-// from the edge say: over them, the least-squares line log display = a + b log scene (b = 1, a
-// pure gain, when they are flat); each near pixel's display value over the value that line
-// predicts for its scene value, averaged at each distance from the edge within a band; a near
-// pixel counts only if its scene value lies within the far pixels' range (within 5 %), so that
-// the line is never extrapolated into an umbra, and only pixels above the display's black (5 %
-// above the image's darkest display value) count: a black floor is no halo. A map
-// without halos treats a region alike near and far (clip, linear, any global curve), and the
-// measure is then 0 whatever the region's own gradients, which the scene value carries.
+// from the edge show at the same luminance: for a near pixel, the least-squares line log display
+// = a + b log scene through the far pixels whose scene values lie within 10 % of its own (b = 1,
+// a pure gain, when they are all alike), so that a region shown as any curve of its luminance
+// reads 0 and only a difference between near and far at one luminance counts; each near pixel's
+// display value over the value so predicted, averaged at each distance from the edge within a
+// band. A near pixel counts only where at least minimumPixels far pixels lie within those 10 % (the
+// relation is never extrapolated into an umbra), and only pixels above the display's black (5 %
+// above the image's darkest display value) count: a black floor is no halo. A map without halos
+// treats a region alike near and far (clip, linear, any global curve, a curve per region), and
+// the measure is then 0 whatever the region's own gradients, which the scene value carries.
 #include "image/images.hpp"
 
 namespace penumbra {

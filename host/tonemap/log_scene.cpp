@@ -67,9 +67,23 @@ double LogScene::insideTarget(double d, double distance, size_t a, size_t b) con
 }
 
 double LogScene::exposedValue(size_t pixel) const {
-  const double y = std::exp(static_cast<double>(logValue[pixel]) - logWhite);
+  return exposedLogValue(logValue[pixel]);
+}
+
+double LogScene::exposedLogValue(double value) const {
+  const double y = std::exp(value - logWhite);
   const double lowerBound = std::exp(logLowerBound);
   return std::log(lowerBound + (1 - lowerBound) * y / (1 + y));
+}
+
+double LogScene::levelEdgeTarget(double d) const {
+  const double shown =
+      std::pow(kLevelEdgeKnee, 1 - kLevelExponent) * std::pow(std::abs(d), kLevelExponent);
+  return std::copysign(std::min(shown, kLevelEdgeCap), d);
+}
+
+double LogScene::levelInsideFactor(double gradient) const {
+  return std::pow(gradient / kLevelKnee, kLevelExponent - 1);
 }
 
 LogScene logScene(const DisplaySpaces& spaces, const RegionMap& regions) {

@@ -33,6 +33,16 @@ struct LogScene {
   double insideTarget(double d, double distance, size_t a, size_t b) const;
   // Space 3 at a pixel: log of LowerBound + (1 − LowerBound)·y/(1 + y), y = V₀ / white.
   double exposedValue(size_t pixel) const;
+  // Space 3 of a log V₀.
+  double exposedLogValue(double logValue) const;
+
+  // The luminance lattice's targets (luminance_lattice.hpp). Across an edge: the attenuation of
+  // the inside rows with the edge's own log ratio as its gradient (an edge is a gradient of |d|
+  // per pixel), sign(d)·k_e^(1−β)|d|^β, at most kLevelEdgeCap: a faint edge (a corner between two
+  // walls) is raised as a gentle gradient is, a strong one compressed.
+  double levelEdgeTarget(double d) const;
+  // Inside a region, at a level whose pixels have the log gradient G: the factor (G/k)^(β−1).
+  double levelInsideFactor(double gradient) const;
 };
 
 // Across an edge: log ratios up to kEdgeKnee are kept, larger ones shown as
@@ -41,6 +51,10 @@ constexpr double kEdgeKnee = 0.5, kEdgeExponent = 0.5, kEdgeCap = 1.0;
 // Inside a region: a log gradient g per pixel is shown as kInsideKnee·(g/kInsideKnee)^
 // kInsideExponent: raised below 3 % per pixel, compressed above.
 constexpr double kInsideKnee = 0.03, kInsideExponent = 0.7;
+// The luminance lattice's attenuation: k = kLevelKnee, β = kLevelExponent inside a region,
+// k_e = kLevelEdgeKnee across an edge, and no edge shown above kLevelEdgeCap (e² = 7.4:1). Chosen
+// on the TMQI bench (docs/tonemap.md, "Choosing the constants").
+constexpr double kLevelKnee = 0.1, kLevelExponent = 0.65, kLevelEdgeKnee = 3, kLevelEdgeCap = 2;
 LogScene logScene(const DisplaySpaces& spaces, const RegionMap& regions);
 
 }  // namespace penumbra

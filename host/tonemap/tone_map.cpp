@@ -10,6 +10,8 @@
 #include "tonemap/bounded_least_squares.hpp"
 #include "tonemap/constraint_system.hpp"
 #include "tonemap/display_spaces.hpp"
+#include "tonemap/log_scene.hpp"
+#include "tonemap/luminance_lattice.hpp"
 #include "tonemap/region_map.hpp"
 #include "tonemap/vertex_gain_field.hpp"
 #include "tonemap/vertex_mesh.hpp"
@@ -86,11 +88,16 @@ Eigen::VectorXd raisedToWhite(const Eigen::VectorXd& solved, const Eigen::Vector
 ScalarImage constraintDisplayValues(const DisplaySpaces& spaces, const RegionMap& regions,
                                     const ToneMapOptions& options, ToneMapStats& stats) {
   auto start = Clock::now();
-  const VertexMesh mesh = buildVertexMesh(regions, options.lattice);
   const LogScene scene = logScene(spaces, regions);
-  const ConstraintSystem system = buildConstraintSystem(
-      mesh, regions, scene, ConstraintWeights{options.strong, options.medium, options.weak});
-  stats.variables = static_cast<int>(mesh.vertices.size());
+  const ConstraintWeights weights{options.strong, options.medium, options.weak};
+  const bool levels = options.vertices == VertexLattice::Levels;
+  const LuminanceLattice knots =
+      levels ? buildLuminanceLattice(regions, scene) : LuminanceLattice{};
+  const VertexMesh mesh = levels ? VertexMesh{} : buildVertexMesh(regions, options.lattice);
+  const ConstraintSystem system = levels
+                                      ? buildLevelConstraintSystem(knots, regions, scene, weights)
+                                      : buildConstraintSystem(mesh, regions, scene, weights);
+  stats.variables = levels ? knots.variables : static_cast<int>(mesh.vertices.size());
   stats.threeVariableRows = system.threeVariableRows;
   stats.buildSeconds = secondsSince(start);
 
@@ -106,7 +113,8 @@ ScalarImage constraintDisplayValues(const DisplaySpaces& spaces, const RegionMap
   reportResiduals(system, shown, stats);
 
   start = Clock::now();
-  ScalarImage display = interpolateDisplayValues(mesh, regions, spaces, scene, shown);
+  ScalarImage display = levels ? levelDisplayValues(knots, regions, spaces, scene, shown)
+                               : interpolateDisplayValues(mesh, regions, spaces, scene, shown);
   stats.pixelSeconds = secondsSince(start);
   return display;
 }
@@ -123,6 +131,19 @@ std::string displayMethodName(DisplayMethod method) {
       return "constraint";
   }
   return "unknown";
+}
+
+std::string vertexLatticeName(VertexLattice lattice) {
+  return lattice == VertexLattice::Levels ? "levels" : "image";
+}
+
+VertexLattice vertexLatticeFromName(const std::string& name) {
+  std::string lower = name;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (VertexLattice lattice : {VertexLattice::Levels, VertexLattice::Image}) {
+    if (vertexLatticeName(lattice) == lower) return lattice;
+  }
+  throw std::invalid_argument("unknown vertex lattice \"" + name + "\" (levels, image)");
 }
 
 DisplayMethod displayMethodFromName(const std::string& name) {
@@ -146,6 +167,7 @@ ScalarImage displayValuesIn(const DisplaySpaces& spaces, const FaceIdImage& face
   s.ambient = options.ambient;
   s.lowerBound = spaces.lowerBound;
   s.strong = options.strong, s.medium = options.medium, s.weak = options.weak;
+  s.vertices = vertexLatticeName(options.vertices);
   s.lattice = options.lattice;
   s.width = spaces.width, s.height = spaces.height;
   const RegionMap regions = findRegions(faces);

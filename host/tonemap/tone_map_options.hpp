@@ -15,6 +15,16 @@ std::string displayMethodName(DisplayMethod method);
 // "clip", "linear", "constraint" (any case); throws std::invalid_argument otherwise.
 DisplayMethod displayMethodFromName(const std::string& name);
 
+// Where the constraint map's vertices lie: on a lattice of luminance levels of each region (each
+// region shown as one curve of its own luminance; luminance_lattice.hpp), or on a lattice of
+// pixels (the thesis's mesh, vertex_mesh.hpp), which shows a region with a gain that may change
+// across it.
+enum class VertexLattice { Levels, Image };
+
+std::string vertexLatticeName(VertexLattice lattice);
+// "levels", "image" (any case); throws std::invalid_argument otherwise.
+VertexLattice vertexLatticeFromName(const std::string& name);
+
 struct ToneMapOptions {
   DisplayMethod method = DisplayMethod::Constraint;
   // LowerBound (eq. 4.17): the display's black as a fraction of its white. 0.02 is a screen in a
@@ -28,7 +38,9 @@ struct ToneMapOptions {
   double strong = 10.0;
   double medium = 100.0;
   double weak = 0.1;
-  // Largest spacing in pixels between the vertices of a region (interior lattice and boundary).
+  VertexLattice vertices = VertexLattice::Levels;
+  // The image lattice only: largest spacing in pixels between the vertices of a region (interior
+  // lattice and boundary).
   int lattice = 8;
   // clip only: the luminance shown as white, cd/m² (a fixed exposure: the same cd/m² gives the
   // same display value in every picture). 0: automatic, from each picture's own log average.
@@ -47,6 +59,7 @@ struct ToneMapStats {
   std::string method;
   double black = 0;
   double strong = 0, medium = 0, weak = 0;
+  std::string vertices;  // "levels" or "image"
   int lattice = 0;
   double white = 0;  // clip: the luminance shown as white, cd/m², fixed or automatic; 0 otherwise
   double displayLuminance = 0;  // the target display's white, cd/m²
