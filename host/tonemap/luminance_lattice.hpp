@@ -1,13 +1,14 @@
 #pragma once
-// The constraint map's variables on a lattice of luminance levels (docs/tonemap.md, "Vertices"):
-// each region (one visible part of one face) is shown as one curve of its own Space-0 luminance,
-// log V = Φ_r(ℓ), piecewise linear between knots every kLevelStep of ℓ = log V₀ from the region's
-// darkest pixel to its brightest. The knots' log V are the unknowns; the hierarchy's rows are
-// written on them:
+// The constraint map's variables on a lattice of luminance levels (docs/tonemap.md, "What it
+// does"): each region (one visible part of one face) is shown as one curve of its own Space-0
+// luminance, log V = Φ_r(ℓ), piecewise linear between knots at most kLevelStep of ℓ = log V₀
+// apart, from the region's darkest pixel to its brightest. The knots' log V are the unknowns; the
+// hierarchy's rows are written on them:
 //   strong  every 4-adjacent pixel pair across an edge: Φ_r(ℓ_p) − Φ_s(ℓ_q) = levelEdgeTarget(ℓ_p
 //           − ℓ_q), each side's Φ interpolated between its two knots (weight below);
-//   medium  each knot step: Φ_r(ℓ_{k+1}) − Φ_r(ℓ_k) = kLevelStep · levelInsideFactor(G), G the log
-//           gradient of the region's pixels at that level (Fattal et al.'s attenuation per level);
+//   medium  each knot step: Φ_r(ℓ_{k+1}) − Φ_r(ℓ_k) = (ℓ_{k+1} − ℓ_k)·levelInsideFactor(G), G
+//           the log gradient of the region's pixels at that level (Fattal et al.'s attenuation
+//           per level);
 //   weak    every knot at its Space-3 value;
 //   required  log LowerBound ≤ Φ ≤ 0 at every knot, hence at every pixel.
 // Why levels and not places: a pixel's display value is a function of its own luminance and its
