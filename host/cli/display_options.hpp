@@ -83,7 +83,7 @@ inline void addDisplayOptions(CLI::App& command, ToneMapOptions& options) {
           "--vertices",
           [&options](const std::string& name) { options.vertices = vertexLatticeFromName(name); },
           "Where the constraint map's unknowns lie: levels (default: each region shown as one "
-          "curve of its own luminance, knots every 5 % of it; no halos) or image (the thesis's "
+          "curve of its own luminance, knots at most 5 % apart; no halos) or image (the thesis's "
           "mesh of pixels, a gain that may change across a region)")
       ->check(CLI::IsMember({"levels", "image"}, CLI::ignore_case))
       ->type_name("levels|image");
