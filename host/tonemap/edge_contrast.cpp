@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tonemap/region_map.hpp"
+
 namespace penumbra {
 namespace {
 
@@ -31,13 +33,7 @@ EdgeContrastShare measureEdgeContrast(const RgbImage& hdr, const FaceIdImage& fa
     const double shown = std::log(double(displayValue.values[a]) / displayValue.values[b]);
     if (std::abs(shown - wanted) <= limit) ++result.kept;
   };
-  for (int y = 0; y < faces.height; ++y) {
-    for (int x = 0; x < faces.width; ++x) {
-      const size_t i = static_cast<size_t>(y) * faces.width + x;
-      if (x + 1 < faces.width) pair(i, i + 1);
-      if (y + 1 < faces.height) pair(i, i + faces.width);
-    }
-  }
+  forEachAdjacentPair(faces.width, faces.height, pair);
   return result;
 }
 

@@ -54,13 +54,7 @@ LevelGradients levelGradients(const LuminanceLattice& lattice, const RegionMap& 
       g.spanSlopeSum[lattice.first[r] + k] += overlap * (lb - la);
     }
   };
-  for (int y = 0; y < regions.height; ++y) {
-    for (int x = 0; x < regions.width; ++x) {
-      const size_t i = regions.index(x, y);
-      if (x + 1 < regions.width) span(i, i + 1);
-      if (y + 1 < regions.height) span(i, i + regions.width);
-    }
-  }
+  forEachAdjacentPair(regions.width, regions.height, span);
   return g;
 }
 
@@ -128,13 +122,7 @@ ConstraintSystem buildLevelConstraintSystem(const LuminanceLattice& lattice,
               {pb.knot + (pb.weight > 0), -pb.weight}},
              target);
   };
-  for (int y = 0; y < regions.height; ++y) {
-    for (int x = 0; x < regions.width; ++x) {
-      const size_t i = regions.index(x, y);
-      if (x + 1 < regions.width) edge(i, i + 1);
-      if (y + 1 < regions.height) edge(i, i + regions.width);
-    }
-  }
+  forEachAdjacentPair(regions.width, regions.height, edge);
 
   // Medium: each knot step, the attenuated scene step.
   for (int r = 0; r < regions.count; ++r) {
@@ -167,14 +155,9 @@ ScalarImage levelDisplayValues(const LuminanceLattice& lattice, const RegionMap&
   ScalarImage display(regions.width, regions.height);
   for (size_t i = 0; i < scene.logValue.size(); ++i) {
     const int r = regions.region[i];
-    double value;
-    if (r == RegionMap::kNone) {
-      value = scene.exposedValue(i);
-    } else {
-      const LuminanceLattice::Position p = lattice.locate(r, scene.logValue[i]);
-      value = p.weight > 0 ? (1 - p.weight) * values[p.knot] + p.weight * values[p.knot + 1]
-                           : values[p.knot];
-    }
+    const double value = r == RegionMap::kNone
+                             ? scene.exposedValue(i)
+                             : lattice.valueAt(values, lattice.locate(r, scene.logValue[i]));
     display.values[i] = boundedDisplayValue(std::exp(value), spaces.lowerBound);
   }
   return display;

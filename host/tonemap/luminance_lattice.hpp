@@ -55,6 +55,11 @@ struct LuminanceLattice {
     double weight = 0;
   };
   Position locate(int region, double logValue) const;
+  // Φ at a position, from the knots' values.
+  double valueAt(const Eigen::VectorXd& values, Position p) const {
+    return p.weight > 0 ? (1 - p.weight) * values[p.knot] + p.weight * values[p.knot + 1]
+                        : values[p.knot];
+  }
 };
 
 LuminanceLattice buildLuminanceLattice(const RegionMap& regions, const LogScene& scene);
